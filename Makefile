@@ -1,0 +1,37 @@
+# poresph: the two commands of the README. Both install what is missing (Debian 12), build, and run.
+# The CUDA backend is compiled whenever nvcc is present (it runs only where a GPU is).
+NVCC   := $(firstword $(wildcard /usr/local/cuda/bin/nvcc) $(shell command -v nvcc 2>/dev/null))
+PRESET ?= $(if $(NVCC),cuda,cpu-release)
+BUILD  := build/$(PRESET)
+JOBS   ?= $(shell nproc)
+
+.PHONY: all deps build test demo validate validate-full bench clean
+
+all: build
+
+deps:
+	@scripts/install-deps.sh
+
+build: deps
+	@cmake --preset $(PRESET) >/dev/null
+	@cmake --build --preset $(PRESET) -j $(JOBS)
+
+# Every test (unit, command line, validation at CI size; GPU tests skip without a GPU).
+test: build
+	@ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+
+# Runs the embedded default case and says where its output went.
+demo: build
+	@$(BUILD)/solver/poresph demo
+
+validate: build
+	@$(BUILD)/solver/poresph validate
+
+validate-full: build
+	@$(BUILD)/solver/poresph validate --full
+
+bench: build
+	@$(BUILD)/solver/poresph bench
+
+clean:
+	rm -rf build

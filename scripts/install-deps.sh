@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages poresph needs. Idempotent: when every package is present it
+# only checks (dpkg-query) and returns in well under a second.
+#   scripts/install-deps.sh            solver, tests, VTK output (ParaView 5.11)
+#   scripts/install-deps.sh --minimal  solver and tests only (no ParaView)
+set -euo pipefail
+
+pkgs=(build-essential cmake ninja-build libomp-dev
+      libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
+      libgtest-dev libbenchmark-dev)
+[[ "${1:-}" == "--minimal" ]] || pkgs+=(paraview-dev python3-paraview)  # ParaView's CMake package needs its Python modules
+
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[[ ${#missing[@]} -eq 0 ]] && exit 0
+
+echo "poresph: installing ${missing[*]}" >&2
+SUDO=""
+[[ $(id -u) -eq 0 ]] || SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

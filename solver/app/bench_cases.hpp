@@ -1,0 +1,29 @@
+#pragma once
+// Benchmark scenes: a periodic box of fluid with a shear-wave velocity field (every particle has a
+// full neighbourhood and moves), in 2D and 3D, over a range of sizes.
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace psph {
+
+struct BenchSpec {
+  std::string name;
+  int dimension = 3;
+  long target_particles = 10000;
+  double support_per_spacing = 2.0;  // Pazdniakou's resolution: support = 2 spacings
+  int steps = 20;
+};
+
+struct BenchResult {
+  std::string name, backend, device, precision;
+  int dimension = 0, particles = 0, fluid_particles = 0, threads = 1;
+  long steps = 0;
+  double seconds = 0, particle_steps_per_second = 0, fluid_particle_steps_per_second = 0, neighbours = 0,
+         interactions_per_second = 0;
+};
+
+std::vector<BenchSpec> bench_specs(const std::string& backend, bool quick);
+BenchResult run_bench(const BenchSpec& spec, const std::string& backend, std::ostream* log);
+
+}  // namespace psph

@@ -1,0 +1,182 @@
+// poresph run / check / demo: load and check a case, then drive the run and its run directory.
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "app/commands.hpp"
+#include "engine/engine.hpp"
+#include "io/particle_output.hpp"
+#include "io/run_directory.hpp"
+#include "scene/case_file.hpp"
+#include "scene/embedded_cases.hpp"
+#include "scene/scene_builder.hpp"
+
+namespace psph {
+namespace {
+
+std::atomic<int> g_signal{0};
+extern "C" void on_signal(int sig) { g_signal = sig; }
+
+std::string seconds_text(double s) {
+  char b[32];
+  if (s < 120) std::snprintf(b, sizeof b, "%.0f s", s);
+  else if (s < 7200) std::snprintf(b, sizeof b, "%.1f min", s / 60);
+  else std::snprintf(b, sizeof b, "%.1f h", s / 3600);
+  return b;
+}
+
+// Loads a case and builds its particles; prints the error and returns false on bad input.
+bool prepare(Case& c, const std::string& path, const std::string* text) {
+  try {
+    c = text ? load_case_text(*text, path) : load_case_file(path);
+    build_particles(c);
+    return true;
+  } catch (const CaseError& e) {
+    std::cerr << "poresph: " << e.what() << "\n";
+    return false;
+  }
+}
+
+int drive(Case& c, const RunOptions& opt) {
+  std::unique_ptr<Engine> engine;
+  try {
+    engine = make_engine(c.scene, opt.backend);
+  } catch (const std::exception& e) {
+    std::cerr << "poresph: " << e.what() << "\n";
+    return 2;
+  }
+  const std::string dir = opt.out.empty() ? default_run_directory(c.name) : opt.out;
+  std::unique_ptr<RunDirectory> rd;
+  try {
+    rd = std::make_unique<RunDirectory>(dir, c.source_text);
+  } catch (const std::exception& e) {
+    std::cerr << "poresph: " << e.what() << "\n";
+    return 2;
+  }
+  std::ostringstream head;
+  head << "poresph run " << c.file << ": case " << c.name << ", " << engine->particles() << " particles, "
+       << c.scene.dimension << "D, backend " << engine->backend() << " (" << engine->device() << "), "
+       << precision_name() << " precision, end time " << c.end_time << " s";
+  rd->log(head.str());
+
+  const bool extracts = particle_output_available();
+  if (!extracts) rd->log("note: built without ParaView's VTK, no particle extracts are written");
+  ParticleWriter writer(rd->extracts(), c.output.fields);
+  const double t_end = c.end_time;
+  const double dt_mon = c.output.monitor_interval > 0 ? c.output.monitor_interval : t_end / 100;
+  const double dt_ext = c.output.extract_interval > 0 ? c.output.extract_interval : t_end;
+  int n_mon = 1, n_ext = 1;
+  rd->monitor(*engine);
+  if (extracts) writer.write(*engine);
+
+  g_signal = 0;
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  using clock = std::chrono::steady_clock;
+  const auto t0 = clock::now();
+  auto last_print = t0;
+  std::string status = "completed";
+  int code = 0;
+  try {
+    while (engine->time() < t_end) {
+      const double t_next = std::min({t_end, n_mon * dt_mon, n_ext * dt_ext});
+      engine->step(t_next);
+      const double t = engine->time();
+      if (t >= n_mon * dt_mon * (1 - 1e-12)) {
+        rd->monitor(*engine);
+        while (n_mon * dt_mon <= t * (1 + 1e-12)) ++n_mon;
+      }
+      if (t >= n_ext * dt_ext * (1 - 1e-12)) {
+        if (extracts) writer.write(*engine);
+        while (n_ext * dt_ext <= t * (1 + 1e-12)) ++n_ext;
+      }
+      const auto now = clock::now();
+      const double wall = std::chrono::duration<double>(now - t0).count();
+      if (!opt.quiet && (std::chrono::duration<double>(now - last_print).count() > 2.0 || t >= t_end)) {
+        last_print = now;
+        const double sps = engine->steps() / std::max(wall, 1e-9);
+        const double left = (t_end - t) / std::max(t, 1e-300) * wall;
+        char line[256];
+        std::snprintf(line, sizeof line, "step %ld  t = %.6g s (%.1f %%)  dt = %.3g s  %.1f steps/s  time left %s",
+                      engine->steps(), t, 100 * t / t_end, engine->last_dt(), sps, seconds_text(left).c_str());
+        rd->log(line);
+      }
+      if (g_signal) {
+        status = "interrupted";
+        code = 130;
+        rd->log("interrupted by signal " + std::to_string(g_signal.load()) + " at t = " + std::to_string(t) + " s");
+        break;
+      }
+    }
+  } catch (const InstabilityError& e) {
+    status = "unstable";
+    code = 3;
+    rd->log(std::string("unstable: ") + e.what());
+  } catch (const std::exception& e) {
+    status = "failed";
+    code = 4;
+    rd->log(std::string("failed: ") + e.what());
+  }
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  if (status != "unstable" && status != "failed") rd->monitor(*engine);
+  if (extracts && status == "interrupted") writer.write(*engine);
+  if (extracts) writer.write_collection();
+
+  const double wall = std::chrono::duration<double>(clock::now() - t0).count();
+  const double steps = double(engine->steps());
+  nlohmann::json j = {{"case", c.name},
+                      {"status", status},
+                      {"backend", engine->backend()},
+                      {"device", engine->device()},
+                      {"precision", precision_name()},
+                      {"dimension", c.scene.dimension},
+                      {"particles", engine->particles()},
+                      {"steps", engine->steps()},
+                      {"time", engine->time()},
+                      {"end_time", t_end},
+                      {"wall_seconds", wall},
+                      {"particle_steps_per_second", steps * engine->particles() / std::max(wall, 1e-9)}};
+  rd->write_summary(j);
+  rd->log("run " + status + " after " + std::to_string(engine->steps()) + " steps in " + seconds_text(wall) +
+          "; output in " + rd->path());
+  return code;
+}
+
+}  // namespace
+
+int cmd_check(const std::string& path) {
+  Case c;
+  if (!prepare(c, path, nullptr)) return 2;
+  long fluid = 0;
+  for (int m : c.scene.material) fluid += c.scene.materials[m].props.kind == MaterialKind::Fluid;
+  std::cout << path << ": case " << c.name << " is valid: " << c.scene.count() << " particles (" << fluid
+            << " fluid), " << c.scene.dimension << "D, support radius " << c.scene.options.support_radius
+            << " m, spacing " << c.scene.options.spacing << " m, end time " << c.end_time << " s\n";
+  return 0;
+}
+
+int cmd_run(const std::string& path, const RunOptions& opt) {
+  Case c;
+  if (!prepare(c, path, nullptr)) return 2;
+  return drive(c, opt);
+}
+
+int cmd_demo(const RunOptions& opt) {
+  const std::string name = "poiseuille_couette";
+  for (const auto& ec : embedded_cases())
+    if (name == ec.name) {
+      const std::string text = ec.text;
+      Case c;
+      if (!prepare(c, "cases/" + name + ".toml (embedded)", &text)) return 2;
+      return drive(c, opt);
+    }
+  std::cerr << "poresph: the embedded demo case is missing from this build\n";
+  return 4;
+}
+
+}  // namespace psph

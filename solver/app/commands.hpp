@@ -1,0 +1,22 @@
+#pragma once
+// The subcommands of the poresph command line (GUIDE §5).
+#include <string>
+#include <vector>
+
+namespace psph {
+
+struct RunOptions {
+  std::string backend = "cpu";
+  std::string out;  // run directory; empty = runs/<case>-<timestamp>
+  bool quiet = false;
+};
+
+// Exit codes: 0 done, 2 bad input (nothing written), 3 unstable run (diagnostic in log.txt),
+// 4 runtime failure, 130 interrupted.
+int cmd_run(const std::string& case_path, const RunOptions& opt);
+int cmd_demo(const RunOptions& opt);
+int cmd_check(const std::string& case_path);
+int cmd_validate(const std::vector<std::string>& names, bool full, bool json, const std::string& backend);
+int cmd_bench(bool json, const std::string& backend, bool quick);
+
+}  // namespace psph

@@ -1,0 +1,49 @@
+// poresph command line: run, check, validate, bench, demo.
+#include <CLI/CLI.hpp>
+#include <vector>
+
+#include "app/commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"poresph: pore-scale SPH simulation of gas, water and deforming clay"};
+  app.require_subcommand(1);
+  psph::RunOptions ro;
+  const std::vector<std::string> backends{"cpu", "cuda"};
+
+  std::string case_path;
+  auto* run = app.add_subcommand("run", "run a case file");
+  run->add_option("case", case_path, "case file (TOML)")->required();
+  run->add_option("--backend", ro.backend, "cpu or cuda")->check(CLI::IsMember(backends));
+  run->add_option("--out", ro.out, "run directory (default runs/<case>-<time>)");
+  run->add_flag("--quiet", ro.quiet, "no progress lines on the terminal");
+
+  auto* check = app.add_subcommand("check", "validate a case file, run nothing");
+  check->add_option("case", case_path, "case file (TOML)")->required();
+
+  std::vector<std::string> names;
+  bool full = false, json = false, quick = false;
+  std::string vbackend = "cpu";
+  auto* validate = app.add_subcommand("validate", "run the validation cases against their references");
+  validate->add_option("names", names, "validation cases to run (default: all)");
+  validate->add_flag("--full", full, "published sizes instead of the reduced CI sizes");
+  validate->add_flag("--json", json, "print a JSON array of records");
+  validate->add_option("--backend", vbackend, "cpu or cuda")->check(CLI::IsMember(backends));
+
+  auto* bench = app.add_subcommand("bench", "measure the speed of the solver");
+  bench->add_flag("--json", json, "print JSON records");
+  bench->add_flag("--quick", quick, "small sizes only (a smoke run)");
+  bench->add_option("--backend", vbackend, "cpu or cuda")->check(CLI::IsMember(backends));
+
+  auto* demo = app.add_subcommand("demo", "run the embedded default case");
+  demo->add_option("--backend", ro.backend, "cpu or cuda")->check(CLI::IsMember(backends));
+  demo->add_option("--out", ro.out, "run directory");
+  demo->add_flag("--quiet", ro.quiet, "no progress lines on the terminal");
+
+  CLI11_PARSE(app, argc, argv);
+  if (*run) return psph::cmd_run(case_path, ro);
+  if (*check) return psph::cmd_check(case_path);
+  if (*validate) return psph::cmd_validate(names, full, json, vbackend);
+  if (*bench) return psph::cmd_bench(json, vbackend, quick);
+  if (*demo) return psph::cmd_demo(ro);
+  return 1;
+}

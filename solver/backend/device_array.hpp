@@ -1,0 +1,58 @@
+#pragma once
+// Owning array in a backend's memory (host memory for the CPU backend, cudaMalloc for CUDA).
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace psph {
+
+template <class T, class B>
+class DeviceArray {
+ public:
+  DeviceArray() = default;
+  explicit DeviceArray(std::size_t n) { resize(n); }
+  ~DeviceArray() { B::release(ptr_); }
+  DeviceArray(const DeviceArray&) = delete;
+  DeviceArray& operator=(const DeviceArray&) = delete;
+  DeviceArray(DeviceArray&& o) noexcept : ptr_(std::exchange(o.ptr_, nullptr)), n_(std::exchange(o.n_, 0)) {}
+  DeviceArray& operator=(DeviceArray&& o) noexcept {
+    std::swap(ptr_, o.ptr_);
+    std::swap(n_, o.n_);
+    return *this;
+  }
+
+  void resize(std::size_t n) {
+    if (n == n_) return;
+    B::release(ptr_);
+    ptr_ = static_cast<T*>(B::allocate(n * sizeof(T)));
+    n_ = n;
+  }
+  void swap(DeviceArray& o) noexcept {
+    std::swap(ptr_, o.ptr_);
+    std::swap(n_, o.n_);
+  }
+  void upload(const std::vector<T>& h) {
+    resize(h.size());
+    B::upload(ptr_, h.data(), h.size() * sizeof(T));
+  }
+  void download(std::vector<T>& h) const {
+    h.resize(n_);
+    B::download(h.data(), ptr_, n_ * sizeof(T));
+  }
+  std::vector<T> host() const {
+    std::vector<T> h;
+    download(h);
+    return h;
+  }
+  void zero() { B::fill_zero(ptr_, n_ * sizeof(T)); }
+
+  T* data() { return ptr_; }
+  const T* data() const { return ptr_; }
+  std::size_t size() const { return n_; }
+
+ private:
+  T* ptr_ = nullptr;
+  std::size_t n_ = 0;
+};
+
+}  // namespace psph

@@ -1,0 +1,127 @@
+#pragma once
+// Small fixed-size vector and matrix for 1D/2D/3D particle maths, usable on host and device.
+#include <cmath>
+
+#include "core/config.hpp"
+
+namespace psph {
+
+// True for a finite number (false for NaN and +-Inf), on host and device alike.
+PSPH_HD inline bool is_finite(Real x) { return x - x == Real(0); }
+
+template <int D>
+struct Vec {
+  Real c[D];
+  PSPH_HD Real& operator[](int k) { return c[k]; }
+  PSPH_HD const Real& operator[](int k) const { return c[k]; }
+  static PSPH_HD Vec zero() {
+    Vec v;
+    for (int k = 0; k < D; ++k) v.c[k] = Real(0);
+    return v;
+  }
+  PSPH_HD Vec& operator+=(const Vec& o) {
+    for (int k = 0; k < D; ++k) c[k] += o.c[k];
+    return *this;
+  }
+  PSPH_HD Vec& operator-=(const Vec& o) {
+    for (int k = 0; k < D; ++k) c[k] -= o.c[k];
+    return *this;
+  }
+  PSPH_HD Vec& operator*=(Real s) {
+    for (int k = 0; k < D; ++k) c[k] *= s;
+    return *this;
+  }
+};
+
+template <int D>
+PSPH_HD inline Vec<D> operator+(Vec<D> a, const Vec<D>& b) { return a += b; }
+template <int D>
+PSPH_HD inline Vec<D> operator-(Vec<D> a, const Vec<D>& b) { return a -= b; }
+template <int D>
+PSPH_HD inline Vec<D> operator*(Vec<D> a, Real s) { return a *= s; }
+template <int D>
+PSPH_HD inline Vec<D> operator*(Real s, Vec<D> a) { return a *= s; }
+template <int D>
+PSPH_HD inline Real dot(const Vec<D>& a, const Vec<D>& b) {
+  Real s = 0;
+  for (int k = 0; k < D; ++k) s += a.c[k] * b.c[k];
+  return s;
+}
+template <int D>
+PSPH_HD inline Real norm2(const Vec<D>& a) { return dot(a, a); }
+template <int D>
+PSPH_HD inline Real norm(const Vec<D>& a) { return sqrt(dot(a, a)); }
+
+// Row-major D×D matrix.
+template <int D>
+struct Mat {
+  Real a[D][D];
+  static PSPH_HD Mat zero() {
+    Mat m;
+    for (int r = 0; r < D; ++r)
+      for (int s = 0; s < D; ++s) m.a[r][s] = Real(0);
+    return m;
+  }
+  static PSPH_HD Mat identity() {
+    Mat m = zero();
+    for (int r = 0; r < D; ++r) m.a[r][r] = Real(1);
+    return m;
+  }
+};
+
+template <int D>
+PSPH_HD inline Vec<D> operator*(const Mat<D>& m, const Vec<D>& v) {
+  Vec<D> out;
+  for (int r = 0; r < D; ++r) {
+    Real s = 0;
+    for (int k = 0; k < D; ++k) s += m.a[r][k] * v.c[k];
+    out.c[r] = s;
+  }
+  return out;
+}
+
+// m += a ⊗ b, i.e. m_rs += a_r b_s.
+template <int D>
+PSPH_HD inline void add_outer(Mat<D>& m, const Vec<D>& a, const Vec<D>& b, Real w) {
+  for (int r = 0; r < D; ++r)
+    for (int s = 0; s < D; ++s) m.a[r][s] += w * a.c[r] * b.c[s];
+}
+
+template <int D>
+PSPH_HD inline Real determinant(const Mat<D>& m) {
+  if constexpr (D == 1) {
+    return m.a[0][0];
+  } else if constexpr (D == 2) {
+    return m.a[0][0] * m.a[1][1] - m.a[0][1] * m.a[1][0];
+  } else {
+    return m.a[0][0] * (m.a[1][1] * m.a[2][2] - m.a[1][2] * m.a[2][1]) -
+           m.a[0][1] * (m.a[1][0] * m.a[2][2] - m.a[1][2] * m.a[2][0]) +
+           m.a[0][2] * (m.a[1][0] * m.a[2][1] - m.a[1][1] * m.a[2][0]);
+  }
+}
+
+// Inverse by cofactors; returns false (and leaves `out` as identity) when |det| <= tiny.
+template <int D>
+PSPH_HD inline bool invert(const Mat<D>& m, Mat<D>& out, Real tiny) {
+  const Real det = determinant(m);
+  out = Mat<D>::identity();
+  if (!(fabs(det) > tiny)) return false;
+  const Real inv = Real(1) / det;
+  if constexpr (D == 1) {
+    out.a[0][0] = inv;
+  } else if constexpr (D == 2) {
+    out.a[0][0] = m.a[1][1] * inv;
+    out.a[0][1] = -m.a[0][1] * inv;
+    out.a[1][0] = -m.a[1][0] * inv;
+    out.a[1][1] = m.a[0][0] * inv;
+  } else {
+    for (int r = 0; r < 3; ++r)
+      for (int s = 0; s < 3; ++s) {
+        const int r1 = (s + 1) % 3, r2 = (s + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
+        out.a[r][s] = (m.a[r1][c1] * m.a[r2][c2] - m.a[r1][c2] * m.a[r2][c1]) * inv;
+      }
+  }
+  return true;
+}
+
+}  // namespace psph

@@ -1,0 +1,55 @@
+#pragma once
+// Backend- and dimension-independent handle on a running simulation.
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace psph {
+
+struct StepStats {
+  double v_max = 0, a_max = 0, kinetic_energy = 0, density_deviation_max = 0;
+  std::string dt_limit;  // which limit set the last step
+};
+
+// Raised when a run goes unstable (NaN, a particle leaving the domain, a collapsing time step).
+struct InstabilityError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class Engine {
+ public:
+  virtual ~Engine() = default;
+  virtual int dimension() const = 0;
+  virtual int particles() const = 0;
+  virtual double time() const = 0;
+  virtual long steps() const = 0;
+  virtual double last_dt() const = 0;
+  // Advances one step, never past `t_stop`.
+  virtual void step(double t_stop) = 0;
+  virtual StepStats stats() = 0;
+  // A registered field by name, copied to the host, components interleaved.
+  virtual std::vector<double> field(const std::string& name) = 0;
+  virtual std::vector<std::string> field_names() const = 0;
+  virtual std::string backend() const = 0;
+  virtual std::string device() const = 0;
+  // Mean number of neighbours (r < support) per fluid particle.
+  virtual double mean_neighbours() = 0;
+  // Runs to t_end (exactly).
+  void run_until(double t_end) {
+    while (time() < t_end) step(t_end);
+  }
+};
+
+std::unique_ptr<Engine> make_cpu_engine(const Scene& scene);
+std::unique_ptr<Engine> make_cuda_engine(const Scene& scene);  // throws when built without CUDA
+bool cuda_available();                                          // built with CUDA and a device present
+
+inline std::unique_ptr<Engine> make_engine(const Scene& scene, const std::string& backend) {
+  if (backend == "cuda") return make_cuda_engine(scene);
+  return make_cpu_engine(scene);
+}
+
+}  // namespace psph

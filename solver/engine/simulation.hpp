@@ -1,0 +1,259 @@
+#pragma once
+// One simulation, written once for every backend B and dimension D: the ordered passes of a step.
+// Compiled by the host compiler for the CPU backend and by nvcc for the CUDA backend.
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "boundary/wall_velocity.hpp"
+#include "engine/engine.hpp"
+#include "fluid/density.hpp"
+#include "fluid/momentum.hpp"
+#include "integrate/kick_drift.hpp"
+#include "integrate/timestep.hpp"
+#include "neighbours/cell_grid.hpp"
+#include "scene/scene.hpp"
+#include "state/particles.hpp"
+
+namespace psph {
+
+template <int D>
+struct CellKeyPass {
+  CellGrid<D> grid;
+  const Vec<D>* x;
+  int* key;
+  PSPH_HD void operator()(int i) const { key[i] = grid.cell_of(x[i]); }
+};
+
+template <int D>
+struct NeighbourCount {
+  NeighbourView<D> nb;
+  const std::uint8_t* material;
+  MaterialTable<D> mats;
+  PSPH_HD Real operator()(int i) const {
+    if (!mats.is_fluid(material[i])) return Real(0);
+    int n = 0;
+    nb.for_each(i, [&](int, const Vec<D>&, Real) { ++n; });
+    return Real(n);
+  }
+};
+template <int D>
+struct IsFluid {
+  const std::uint8_t* material;
+  MaterialTable<D> mats;
+  PSPH_HD Real operator()(int i) const { return mats.is_fluid(material[i]) ? Real(1) : Real(0); }
+};
+
+template <int D>
+struct SetWallRestDensity {
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  PSPH_HD void operator()(int i) const {
+    if (!mats.is_fluid(s.material[i])) {
+      s.rho0[i] = s.rho[i];
+      s.p[i] = Real(0);
+    }
+  }
+};
+
+template <int D, class B>
+class Simulation final : public Engine {
+ public:
+  explicit Simulation(const Scene& sc) : opt_(sc.options) {
+    if (sc.dimension != D) throw std::logic_error("scene dimension mismatch");
+    Real lo[D], hi[D];
+    bool per[D];
+    for (int k = 0; k < D; ++k) lo[k] = Real(sc.lower[k]), hi[k] = Real(sc.upper[k]), per[k] = sc.periodic[k];
+    if (!CellGrid<D>::make(lo, hi, per, Real(opt_.support_radius), grid_))
+      throw std::invalid_argument("a periodic axis is shorter than 3 support radii");
+    kern_ = Kernel<D>::make(opt_.kernel, Real(opt_.support_radius));
+    mats_.count = static_cast<int>(sc.materials.size());
+    for (int k = 0; k < mats_.count; ++k) {
+      mats_.m[k] = sc.materials[k].props;
+      for (int d = 0; d < D; ++d) mats_.body_force[k][d] = Real(sc.materials[k].body_force[d]);
+      c_max_ = std::max(c_max_, double(mats_.m[k].sound_speed));
+      has_walls_ |= mats_.m[k].kind == MaterialKind::Wall;
+      if (mats_.m[k].kind == MaterialKind::Fluid && mats_.m[k].viscosity > 0)
+        nu_max_ = std::max(nu_max_, double(mats_.m[k].viscosity / mats_.m[k].rest_density));
+    }
+    upload(sc);
+    cell_start_.resize(grid_.total), cell_end_.resize(grid_.total);
+    build_neighbours();
+    if (continuity()) {
+      B::for_each(n_, EquationOfStatePass<D>{s_.view(), mats_});
+    } else {
+      density_pass();
+      B::for_each(n_, SetWallRestDensity<D>{s_.view(), mats_});
+    }
+    force_pass();
+  }
+
+  int dimension() const override { return D; }
+  int particles() const override { return n_; }
+  double time() const override { return t_; }
+  long steps() const override { return steps_; }
+  double last_dt() const override { return dt_; }
+  std::string backend() const override { return B::name; }
+  std::string device() const override { return B::device_name(); }
+
+  std::vector<double> field(const std::string& name) override {
+    std::vector<double> out;
+    s_.fields().get(name).to_host_double(out);
+    return out;
+  }
+  std::vector<std::string> field_names() const override {
+    std::vector<std::string> names;
+    for (const auto& f : s_.fields().all()) names.push_back(f.info.name);
+    return names;
+  }
+
+  StepStats stats() override {
+    StepStats st;
+    const ParticleView<D> v = s_.view();
+    st.v_max = B::template max_of<Real>(n_, SpeedOf<D>{v});
+    st.a_max = B::template max_of<Real>(n_, AccelerationOf<D>{v});
+    st.kinetic_energy = B::template sum_of<Real>(n_, KineticEnergyOf<D>{v, mats_});
+    st.density_deviation_max = B::template max_of<Real>(n_, DensityDeviationOf<D>{v, mats_});
+    st.dt_limit = dt_limit_;
+    return st;
+  }
+
+  double mean_neighbours() override {
+    const Real total = B::template sum_of<Real>(n_, NeighbourCount<D>{view_nb(), s_.material.data(), mats_});
+    const Real fluid = B::template sum_of<Real>(n_, IsFluid<D>{s_.material.data(), mats_});
+    return fluid > 0 ? double(total / fluid) : 0.0;
+  }
+
+  void step(double t_stop) override {
+    double dt = choose_dt();
+    if (t_ + dt > t_stop) dt = t_stop - t_;
+    if (t_ + dt >= t_stop * (1 - 1e-12)) dt = t_stop - t_;  // land exactly on output times
+    const ParticleView<D> v = s_.view();
+    if (opt_.integrator == Integrator::VelocityVerlet) {
+      // Kick-drift-kick (eq. 49): a(t) is known from the previous force evaluation.
+      B::for_each(n_, KickPass<D>{v, mats_, Real(0.5 * dt)});
+      B::for_each(n_, DriftPass<D>{v, grid_, Real(dt), continuity()});
+      evaluate();
+      B::for_each(n_, KickPass<D>{s_.view(), mats_, Real(0.5 * dt)});
+    } else {
+      // Leapfrog (eq. 48): v(t+dt/2) = v(t-dt/2) + dt a(t), x(t+dt) = x(t) + dt v_hat(t+dt/2).
+      B::for_each(n_, KickPass<D>{v, mats_, Real(dt)});
+      B::for_each(n_, DriftPass<D>{v, grid_, Real(dt), continuity()});
+      evaluate();
+    }
+    t_ += dt;
+    ++steps_;
+    dt_ = dt;
+    check_health();
+  }
+
+ private:
+  double smoothing_length() const { return opt_.support_radius / support_per_smoothing_length(opt_.kernel); }
+  bool continuity() const { return opt_.density == DensityMethod::Continuity; }
+
+  void upload(const Scene& sc) {
+    n_ = sc.count();
+    s_.resize(n_);
+    std::vector<Vec<D>> x(n_), v(n_);
+    std::vector<Real> m(n_), rho(n_), zero(n_, Real(0));
+    std::vector<std::uint8_t> mat(n_);
+    std::vector<std::int32_t> id(n_);
+    for (int i = 0; i < n_; ++i) {
+      for (int k = 0; k < D; ++k) x[i][k] = Real(sc.x[i * D + k]), v[i][k] = Real(sc.v[i * D + k]);
+      m[i] = Real(sc.mass[i]);
+      mat[i] = static_cast<std::uint8_t>(sc.material[i]);
+      rho[i] = mats_.m[sc.material[i]].rest_density;
+      id[i] = i;
+    }
+    s_.x.upload(x), s_.v.upload(v), s_.m.upload(m), s_.rho.upload(rho), s_.rho0.upload(rho);
+    s_.material.upload(mat), s_.id.upload(id);
+    keys_.resize(n_), perm_.resize(n_);
+  }
+
+  NeighbourView<D> view_nb() const {
+    return NeighbourView<D>{grid_, s_.x.data(), cell_start_.data(), cell_end_.data(),
+                            kern_.support * kern_.support};
+  }
+
+  // Cell keys, sort by cell, reorder every registered field, cell ranges.
+  void build_neighbours() {
+    B::for_each(n_, CellKeyPass<D>{grid_, s_.x.data(), keys_.data()});
+    B::sort_by_cell(keys_.data(), n_, grid_.total, perm_.data(), cell_start_.data(), cell_end_.data());
+    s_.permute(perm_.data());
+  }
+
+  void density_pass() {
+    const bool normalised = opt_.density == DensityMethod::NormalisedSummation;
+    if (normalised) B::for_each(n_, NumberDensityPass<D>{view_nb(), kern_, s_.view()});
+    B::for_each(n_, DensitySummationPass<D>{view_nb(), kern_, s_.view(), mats_, normalised});
+  }
+
+  void force_pass() {
+    if (has_walls_) B::for_each(n_, WallVelocityPass<D>{view_nb(), kern_, s_.view(), mats_, opt_.wall_noslip});
+    B::for_each(n_, FluidForcePass<D>{view_nb(), kern_, s_.view(), mats_, continuity(), Real(opt_.xsph),
+                                         opt_.laplacian_normalised});
+  }
+
+  // Neighbours, density (or EOS after continuity), forces at the new positions.
+  void evaluate() {
+    build_neighbours();
+    if (continuity()) B::for_each(n_, EquationOfStatePass<D>{s_.view(), mats_});
+    else density_pass();
+    force_pass();
+  }
+
+  double choose_dt() {
+    if (opt_.fixed_dt > 0) {
+      dt_limit_ = "fixed";
+      return opt_.fixed_dt;
+    }
+    const ParticleView<D> v = s_.view();
+    const double vmax = B::template max_of<Real>(n_, SpeedOf<D>{v});
+    const double amax = B::template max_of<Real>(n_, AccelerationOf<D>{v});
+    const TimeStepLimits lim = time_step_limits(smoothing_length(), c_max_, vmax, amax, nu_max_, opt_.dt_factor);
+    dt_limit_ = lim.limiting();
+    const double dt = lim.min();
+    if (dt_first_ == 0) dt_first_ = dt;
+    if (!(dt >= opt_.min_dt_ratio * dt_first_))
+      throw InstabilityError("time step collapsed to " + std::to_string(dt) + " s (" + dt_limit_ +
+                             " limit) at t = " + std::to_string(t_) + " s, step " + std::to_string(steps_) +
+                             "; first step was " + std::to_string(dt_first_) + " s");
+    return dt;
+  }
+
+  void check_health() {
+    const int bad = B::template max_of<int>(n_, BadParticle<D>{s_.view(), grid_});
+    if (bad == 2)
+      throw InstabilityError("non-finite particle state (NaN or Inf) at t = " + std::to_string(t_) + " s, step " +
+                             std::to_string(steps_));
+    if (bad == 1)
+      throw InstabilityError("a particle left the domain through a closed side at t = " + std::to_string(t_) +
+                             " s, step " + std::to_string(steps_));
+  }
+
+  SolverOptions opt_;
+  CellGrid<D> grid_{};
+  Kernel<D> kern_{};
+  MaterialTable<D> mats_{};
+  ParticleState<D, B> s_;
+  DeviceArray<int, B> keys_, perm_, cell_start_, cell_end_;
+  int n_ = 0;
+  double t_ = 0, dt_ = 0, dt_first_ = 0, c_max_ = 0, nu_max_ = 0;
+  long steps_ = 0;
+  bool has_walls_ = false;
+  std::string dt_limit_ = "none";
+};
+
+template <class B>
+std::unique_ptr<Engine> make_simulation(const Scene& sc) {
+  switch (sc.dimension) {
+    case 1: return std::make_unique<Simulation<1, B>>(sc);
+    case 2: return std::make_unique<Simulation<2, B>>(sc);
+    case 3: return std::make_unique<Simulation<3, B>>(sc);
+  }
+  throw std::invalid_argument("dimension must be 1, 2 or 3");
+}
+
+}  // namespace psph

@@ -1,0 +1,60 @@
+#pragma once
+// Density passes. Sums run over all neighbours of every material (fluid and wall particles alike:
+// the "virtual contribution" that removes the deficit at a material boundary, Pazdniakou §3.1.2).
+#include "fluid/eos.hpp"
+#include "fluid/material.hpp"
+#include "kernels/kernel.hpp"
+#include "neighbours/cell_grid.hpp"
+#include "state/particles.hpp"
+
+namespace psph {
+
+// n_i = sum_j W_ij, self included (Pazdniakou eq. 40).
+template <int D>
+struct NumberDensityPass {
+  NeighbourView<D> nb;
+  Kernel<D> kern;
+  ParticleView<D> s;
+  PSPH_HD void operator()(int i) const {
+    Real n = kern.W(Real(0));
+    nb.for_each(i, [&](int, const Vec<D>&, Real r) { n += kern.W(r); });
+    s.number_density[i] = n;
+  }
+};
+
+// rho_i = sum_j m_j W_ij (eq. 39), or the normalised form
+// rho_i = sum_j m_j W_ij / sum_j W_ij / n_j (eq. 41, needs NumberDensityPass first);
+// then the pressure from the material's equation of state.
+template <int D>
+struct DensitySummationPass {
+  NeighbourView<D> nb;
+  Kernel<D> kern;
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  bool normalised;
+  PSPH_HD void operator()(int i) const {
+    const Real w0 = kern.W(Real(0));
+    Real num = s.m[i] * w0;
+    Real den = normalised ? w0 / s.number_density[i] : Real(1);
+    nb.for_each(i, [&](int j, const Vec<D>&, Real r) {
+      const Real w = kern.W(r);
+      num += s.m[j] * w;
+      if (normalised) den += w / s.number_density[j];
+    });
+    const Real rho = num / den;
+    s.rho[i] = rho;
+    s.p[i] = pressure_from_density(mats[s.material[i]], rho, s.rho0[i]);
+  }
+};
+
+// Pressure from the current density (continuity mode, where density is integrated).
+template <int D>
+struct EquationOfStatePass {
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  PSPH_HD void operator()(int i) const {
+    s.p[i] = pressure_from_density(mats[s.material[i]], s.rho[i], s.rho0[i]);
+  }
+};
+
+}  // namespace psph

@@ -1,0 +1,78 @@
+#pragma once
+// Kick and drift updates shared by the leapfrog (Pazdniakou eq. 48) and velocity-Verlet
+// (eq. 49, kick-drift-kick form) integrators. Walls are never kicked; they drift with their
+// prescribed velocity (fixed walls have v = 0).
+#include <cmath>
+
+#include "fluid/material.hpp"
+#include "neighbours/cell_grid.hpp"
+#include "state/particles.hpp"
+
+namespace psph {
+
+template <int D>
+struct KickPass {
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  Real dt;
+  PSPH_HD void operator()(int i) const {
+    if (mats.is_fluid(s.material[i])) s.v[i] += s.a[i] * dt;
+  }
+};
+
+// x += dt (v + v_xsph) (eq. 48b with the XSPH velocity of eq. 76); with continuity,
+// rho += dt d rho/dt.
+template <int D>
+struct DriftPass {
+  ParticleView<D> s;
+  CellGrid<D> grid;
+  Real dt;
+  bool continuity;
+  PSPH_HD void operator()(int i) const {
+    s.x[i] = grid.wrap(s.x[i] + (s.v[i] + s.v_xsph[i]) * dt);
+    if (continuity) s.rho[i] += s.drho[i] * dt;
+  }
+};
+
+// 1 where a particle's state is not finite or it left the domain through a closed side.
+template <int D>
+struct BadParticle {
+  ParticleView<D> s;
+  CellGrid<D> grid;
+  PSPH_HD int operator()(int i) const {
+    Real sum = s.rho[i];
+    for (int k = 0; k < D; ++k) sum += s.x[i][k] + s.v[i][k] + s.a[i][k];
+    if (!is_finite(sum)) return 2;
+    return grid.inside(s.x[i]) ? 0 : 1;
+  }
+};
+
+template <int D>
+struct SpeedOf {
+  ParticleView<D> s;
+  PSPH_HD Real operator()(int i) const { return norm(s.v[i]); }
+};
+template <int D>
+struct AccelerationOf {
+  ParticleView<D> s;
+  PSPH_HD Real operator()(int i) const { return norm(s.a[i]); }
+};
+template <int D>
+struct KineticEnergyOf {
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  PSPH_HD Real operator()(int i) const {
+    return mats.is_fluid(s.material[i]) ? Real(0.5) * s.m[i] * norm2(s.v[i]) : Real(0);
+  }
+};
+// |rho/rho0 - 1| of fluid particles (weak-compressibility monitor).
+template <int D>
+struct DensityDeviationOf {
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  PSPH_HD Real operator()(int i) const {
+    return mats.is_fluid(s.material[i]) ? fabs(s.rho[i] / s.rho0[i] - Real(1)) : Real(0);
+  }
+};
+
+}  // namespace psph

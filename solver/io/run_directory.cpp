@@ -1,0 +1,50 @@
+#include "io/run_directory.hpp"
+
+#include <chrono>
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+
+namespace psph {
+namespace fs = std::filesystem;
+
+RunDirectory::RunDirectory(const std::string& path, const std::string& resolved) : path_(path) {
+  if (fs::exists(path) && !(fs::is_directory(path) && fs::is_empty(path)))
+    throw std::runtime_error("--out " + path + ": the run directory exists and is not empty; choose another");
+  for (const char* sub : {"", "/extracts", "/images", "/checkpoints"}) fs::create_directories(path + sub);
+  std::ofstream(path + "/case.resolved.toml") << resolved << "\n";
+  log_.open(path + "/log.txt");
+  monitors_.open(path + "/monitors.csv");
+  monitors_ << "step,time,dt,dt_limit,kinetic_energy,v_max,a_max,density_deviation_max\n";
+}
+
+void RunDirectory::log(const std::string& line) {
+  std::cout << line << std::endl;
+  log_ << line << '\n';
+  log_.flush();
+}
+
+void RunDirectory::monitor(Engine& e) {
+  const StepStats s = e.stats();
+  monitors_.precision(10);
+  monitors_ << e.steps() << ',' << e.time() << ',' << e.last_dt() << ',' << s.dt_limit << ',' << s.kinetic_energy
+            << ',' << s.v_max << ',' << s.a_max << ',' << s.density_deviation_max << '\n';
+  monitors_.flush();
+}
+
+void RunDirectory::write_summary(const nlohmann::json& j) const {
+  const std::string p = path_ + "/summary.json";
+  std::ofstream(p + ".tmp") << j.dump(2) << "\n";
+  fs::rename(p + ".tmp", p);
+}
+
+std::string default_run_directory(const std::string& case_name) {
+  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y%m%d-%H%M%S", &tm);
+  return "runs/" + case_name + "-" + buf;
+}
+
+}  // namespace psph

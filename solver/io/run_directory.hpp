@@ -1,0 +1,33 @@
+#pragma once
+// The run directory contract (GUIDE §5): case.resolved.toml, log.txt, monitors.csv, summary.json,
+// extracts/, images/, checkpoints/.
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/engine.hpp"
+
+namespace psph {
+
+class RunDirectory {
+ public:
+  // Creates the directory (it must not exist or be empty) and writes the resolved case.
+  RunDirectory(const std::string& path, const std::string& resolved_case_toml);
+  const std::string& path() const { return path_; }
+  std::string extracts() const { return path_ + "/extracts"; }
+
+  // A line to the terminal and to log.txt.
+  void log(const std::string& line);
+  void monitor(Engine& e);
+  void write_summary(const nlohmann::json& j) const;
+
+ private:
+  std::string path_;
+  std::ofstream log_, monitors_;
+};
+
+// Default run directory: runs/<case name>-<UTC timestamp>.
+std::string default_run_directory(const std::string& case_name);
+
+}  // namespace psph

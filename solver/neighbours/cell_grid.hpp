@@ -1,0 +1,121 @@
+#pragma once
+// Uniform cell grid for the cell-linked neighbour list. Cells are at least one support radius wide,
+// so a particle's neighbours lie in its own cell and the 3^D cells around it. Periodic axes wrap
+// (minimum image); they need at least 3 cells so that the 3 visited cells are distinct.
+#include <cmath>
+
+#include "core/vec.hpp"
+
+namespace psph {
+
+template <int D>
+struct CellGrid {
+  Real lower[D];
+  Real length[D];     // domain length per axis (the period on periodic axes)
+  Real inv_cell[D];   // 1 / cell width
+  int ncell[D];
+  bool periodic[D];
+  int total = 1;
+
+  // Build the grid for a box [lo, hi] and a support radius. Returns false when a periodic axis is
+  // shorter than 3 support radii (the caller reports that as a case-file error).
+  static bool make(const Real* lo, const Real* hi, const bool* per, Real support, CellGrid& g) {
+    g.total = 1;
+    bool ok = true;
+    for (int k = 0; k < D; ++k) {
+      g.lower[k] = lo[k];
+      g.length[k] = hi[k] - lo[k];
+      g.periodic[k] = per[k];
+      int n = static_cast<int>(std::floor(g.length[k] / support));
+      if (n < 1) n = 1;
+      if (per[k] && n < 3) ok = false;
+      g.ncell[k] = n;
+      g.inv_cell[k] = Real(n) / g.length[k];
+      g.total *= n;
+    }
+    return ok;
+  }
+
+  PSPH_HD int axis_cell(int k, Real x) const {
+    int c = static_cast<int>(floor((x - lower[k]) * inv_cell[k]));
+    return c < 0 ? 0 : (c >= ncell[k] ? ncell[k] - 1 : c);
+  }
+
+  PSPH_HD int cell_of(const Vec<D>& x) const {
+    int key = 0;
+    for (int k = D - 1; k >= 0; --k) key = key * ncell[k] + axis_cell(k, x[k]);
+    return key;
+  }
+
+  // x_i - x_j with the minimum-image convention on periodic axes.
+  PSPH_HD Vec<D> separation(const Vec<D>& xi, const Vec<D>& xj) const {
+    Vec<D> d = xi - xj;
+    for (int k = 0; k < D; ++k)
+      if (periodic[k]) {
+        if (d[k] > Real(0.5) * length[k]) d[k] -= length[k];
+        else if (d[k] < Real(-0.5) * length[k]) d[k] += length[k];
+      }
+    return d;
+  }
+
+  // Wraps a position back into the box on periodic axes.
+  PSPH_HD Vec<D> wrap(Vec<D> x) const {
+    for (int k = 0; k < D; ++k)
+      if (periodic[k]) {
+        if (x[k] < lower[k]) x[k] += length[k];
+        else if (x[k] >= lower[k] + length[k]) x[k] -= length[k];
+      }
+    return x;
+  }
+
+  PSPH_HD bool inside(const Vec<D>& x) const {
+    for (int k = 0; k < D; ++k)
+      if (!periodic[k] && !(x[k] >= lower[k] && x[k] <= lower[k] + length[k])) return false;
+    return true;
+  }
+};
+
+// Read-only view of the sorted cell list: particles are stored in cell order, and the particles of
+// cell c are [cell_start[c], cell_end[c]).
+template <int D>
+struct NeighbourView {
+  CellGrid<D> grid;
+  const Vec<D>* x;
+  const int* cell_start;
+  const int* cell_end;
+  Real support2;
+
+  // Calls f(j, x_i - x_j, r) for every particle j != i with r < support (gather order is fixed by
+  // the cell order, so sums are reproducible).
+  template <class F>
+  PSPH_HD void for_each(int i, F&& f) const {
+    const Vec<D> xi = x[i];
+    int ci[D];
+    for (int k = 0; k < D; ++k) ci[k] = grid.axis_cell(k, xi[k]);
+    constexpr int nstencil = D == 1 ? 3 : D == 2 ? 9 : 27;
+    for (int s = 0; s < nstencil; ++s) {
+      int key = 0, rem = s;
+      bool skip = false;
+      int off[D];
+      for (int k = 0; k < D; ++k) { off[k] = rem % 3 - 1; rem /= 3; }
+      for (int k = D - 1; k >= 0; --k) {
+        int c = ci[k] + off[k];
+        if (c < 0 || c >= grid.ncell[k]) {
+          if (!grid.periodic[k]) { skip = true; break; }
+          c = c < 0 ? c + grid.ncell[k] : c - grid.ncell[k];
+        }
+        key = key * grid.ncell[k] + c;
+      }
+      if (skip) continue;
+      const int end = cell_end[key];
+      for (int j = cell_start[key]; j < end; ++j) {
+        if (j == i) continue;
+        const Vec<D> d = grid.separation(xi, x[j]);
+        const Real r2 = norm2(d);
+        if (r2 < support2) f(j, d, sqrt(r2));
+      }
+    }
+  }
+};
+
+}  // namespace psph

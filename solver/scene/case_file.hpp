@@ -1,0 +1,54 @@
+#pragma once
+// Case files (TOML): strict parsing and checking. Every error names the file, the key and what was
+// expected, and is raised before anything is computed or written.
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "scene/scene.hpp"
+
+namespace psph {
+
+struct CaseError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct GeometryShape {
+  enum class Kind { Box, Sphere } kind = Kind::Box;
+  std::array<double, 3> lower{0, 0, 0}, upper{0, 0, 0};  // box
+  std::array<double, 3> center{0, 0, 0};                 // sphere
+  double radius = 0;
+  int material = -1;  // -1: "empty" (removes particles)
+  std::array<double, 3> velocity{0, 0, 0};
+};
+
+struct OutputOptions {
+  double monitor_interval = 0;  // s; 0 = every 1/100 of the run
+  double extract_interval = 0;  // s; 0 = first and last state only
+  std::vector<std::string> fields{"velocity", "pressure", "density", "material"};
+};
+
+struct Case {
+  std::string file;  // where it came from (for messages)
+  std::string name, description;
+  Scene scene;       // domain, materials, options (particles filled by the scene builder)
+  std::vector<GeometryShape> geometry;
+  double end_time = 0;
+  OutputOptions output;
+  std::string source_text;  // the resolved case, as TOML
+};
+
+// Parses and checks a case. `file` is used in messages only.
+Case parse_case(const toml::table& tbl, const std::string& file);
+Case load_case_file(const std::string& path);
+Case load_case_text(const std::string& text, const std::string& file);
+
+// Sets a dotted key (e.g. "discretisation.spacing") in a parsed table: for validation and benchmark
+// variants of a case.
+void set_case_value(toml::table& tbl, const std::string& dotted_key, const toml::node& value);
+
+}  // namespace psph

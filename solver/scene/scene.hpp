@@ -1,0 +1,51 @@
+#pragma once
+// Host-side description of a run, independent of dimension and backend: what the scene builder
+// produces from a case file and what an engine is created from.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "boundary/wall_velocity.hpp"
+#include "fluid/material.hpp"
+#include "kernels/kernel.hpp"
+
+namespace psph {
+
+enum class DensityMethod { Summation, NormalisedSummation, Continuity };
+enum class Integrator { Leapfrog, VelocityVerlet };
+
+struct SceneMaterial {
+  std::string name;
+  Material props;
+  std::array<double, 3> body_force{0, 0, 0};
+};
+
+struct SolverOptions {
+  KernelType kernel = KernelType::CubicSpline;
+  double support_radius = 0;  // m
+  double spacing = 0;         // initial particle spacing (m)
+  DensityMethod density = DensityMethod::Summation;
+  Integrator integrator = Integrator::VelocityVerlet;
+  double xsph = 0;            // XSPH epsilon
+  WallNoSlip wall_noslip = WallNoSlip::Curved;
+  bool laplacian_normalised = true;  // viscous Laplacian divided by its lattice sum (momentum.hpp)
+  double dt_factor = 1;       // scales every time-step limit
+  double fixed_dt = 0;        // > 0: constant step instead of the adaptive one
+  double min_dt_ratio = 1e-4; // a step below this fraction of the first step is a collapse
+};
+
+struct Scene {
+  int dimension = 3;
+  std::array<double, 3> lower{0, 0, 0}, upper{0, 0, 0};
+  std::array<bool, 3> periodic{false, false, false};
+  std::vector<SceneMaterial> materials;
+  SolverOptions options;
+
+  // Particles, components interleaved (dimension per particle).
+  std::vector<double> x, v, mass;
+  std::vector<int> material;
+
+  int count() const { return static_cast<int>(material.size()); }
+};
+
+}  // namespace psph

@@ -1,0 +1,84 @@
+#include "scene/scene_builder.hpp"
+
+#include <cmath>
+
+namespace psph {
+namespace {
+
+bool contains(const GeometryShape& s, const double* x, int D) {
+  if (s.kind == GeometryShape::Kind::Box) {
+    for (int k = 0; k < D; ++k)
+      if (x[k] < s.lower[k] || x[k] > s.upper[k]) return false;
+    return true;
+  }
+  double r2 = 0;
+  for (int k = 0; k < D; ++k) r2 += (x[k] - s.center[k]) * (x[k] - s.center[k]);
+  return r2 <= s.radius * s.radius;
+}
+
+template <int D>
+double lattice_sum(KernelType type, double support, double spacing) {
+  const Kernel<D> k = Kernel<D>::make(type, Real(support));
+  const int n = static_cast<int>(std::ceil(support / spacing));
+  double sum = 0;
+  int idx[3] = {-n, -n, -n};
+  for (;;) {
+    double r2 = 0;
+    for (int d = 0; d < D; ++d) r2 += (idx[d] * spacing) * (idx[d] * spacing);
+    sum += k.W(Real(std::sqrt(r2)));
+    int d = 0;
+    while (d < D && ++idx[d] > n) idx[d++] = -n;
+    if (d == D) break;
+  }
+  return sum;
+}
+
+}  // namespace
+
+double lattice_kernel_sum(int dimension, KernelType kernel, double support, double spacing) {
+  switch (dimension) {
+    case 1: return lattice_sum<1>(kernel, support, spacing);
+    case 2: return lattice_sum<2>(kernel, support, spacing);
+    default: return lattice_sum<3>(kernel, support, spacing);
+  }
+}
+
+void build_particles(Case& c) {
+  Scene& sc = c.scene;
+  const int D = sc.dimension;
+  const double dx = sc.options.spacing;
+  int n[3] = {1, 1, 1};
+  long total = 1;
+  for (int k = 0; k < D; ++k) {
+    n[k] = static_cast<int>(std::floor((sc.upper[k] - sc.lower[k]) / dx + 1e-6));
+    total *= n[k];
+  }
+  if (total > 400'000'000L)
+    throw CaseError(c.file + ": discretisation.spacing: the domain holds " + std::to_string(total) +
+                    " lattice sites; expected at most 4e8");
+  const double n_sum = lattice_kernel_sum(D, sc.options.kernel, sc.options.support_radius, dx);
+  sc.x.clear(), sc.v.clear(), sc.mass.clear(), sc.material.clear();
+  long fluid = 0;
+  int idx[3] = {0, 0, 0};
+  for (long s = 0; s < total; ++s) {
+    double x[3];
+    for (int k = 0; k < D; ++k) x[k] = sc.lower[k] + (idx[k] + 0.5) * dx;
+    const GeometryShape* owner = nullptr;
+    for (const auto& g : c.geometry)
+      if (contains(g, x, D)) owner = &g;
+    if (owner && owner->material >= 0) {
+      const SceneMaterial& m = sc.materials[owner->material];
+      for (int k = 0; k < D; ++k) sc.x.push_back(x[k]), sc.v.push_back(owner->velocity[k]);
+      sc.mass.push_back(m.props.rest_density / n_sum);
+      sc.material.push_back(owner->material);
+      if (m.props.kind == MaterialKind::Fluid) ++fluid;
+    }
+    int d = 0;
+    while (d < D && ++idx[d] >= n[d]) idx[d++] = 0;
+  }
+  if (fluid == 0)
+    throw CaseError(c.file + ": geometry: the geometry yields no fluid particles (" +
+                    std::to_string(sc.material.size()) + " particles in all); check the shapes and the domain");
+}
+
+}  // namespace psph

@@ -1,0 +1,129 @@
+#pragma once
+// Particle state as a structure of arrays in a backend's memory, with every array registered by
+// name. `ParticleView` is the raw-pointer view the passes receive by value.
+#include <cstdint>
+#include <type_traits>
+#include <vector>
+
+#include "backend/device_array.hpp"
+#include "core/vec.hpp"
+#include "state/fields.hpp"
+
+namespace psph {
+
+template <int D>
+struct ParticleView {
+  int n = 0;
+  Vec<D>* x;          // position
+  Vec<D>* v;          // velocity (prescribed for walls)
+  Vec<D>* a;          // acceleration
+  Vec<D>* v_xsph;     // XSPH correction added to the drift velocity
+  Vec<D>* v_noslip;   // walls: velocity seen by the viscous term (no-slip extrapolation)
+  Vec<D>* lap_v;      // fluids: Laplacian of the velocity from the last force pass
+  Real* rho;          // density
+  Real* drho;         // d rho / dt (continuity)
+  Real* p;            // pressure
+  Real* m;            // mass
+  Real* rho0;         // per-particle reference density of the EOS
+  Real* number_density;  // sum_j W_ij (for eq. 41)
+  std::uint8_t* material;
+  std::int32_t* id;   // particle id at creation, to follow particles across reorderings
+};
+
+template <class T, class B>
+struct Gather {
+  T* out;
+  const T* in;
+  const int* perm;
+  PSPH_HD void operator()(int i) const { out[i] = in[perm[i]]; }
+};
+
+template <int D, class B>
+class ParticleState {
+ public:
+  ParticleState() { register_all(); }
+  ParticleState(const ParticleState&) = delete;
+  ParticleState& operator=(const ParticleState&) = delete;
+
+  int size() const { return n_; }
+  const FieldRegistry& fields() const { return registry_; }
+
+  void resize(int n) {
+    n_ = n;
+    x.resize(n), v.resize(n), a.resize(n), v_xsph.resize(n), v_noslip.resize(n), lap_v.resize(n);
+    rho.resize(n), drho.resize(n), p.resize(n), m.resize(n), rho0.resize(n), number_density.resize(n);
+    material.resize(n), id.resize(n);
+    a.zero(), v_xsph.zero(), v_noslip.zero(), lap_v.zero(), drho.zero(), p.zero(), number_density.zero();
+  }
+
+  ParticleView<D> view() {
+    return ParticleView<D>{n_,         x.data(),    v.data(),    a.data(),  v_xsph.data(), v_noslip.data(), lap_v.data(),
+                           rho.data(), drho.data(), p.data(),    m.data(),  rho0.data(),
+                           number_density.data(),   material.data(), id.data()};
+  }
+
+  // Reorders every registered field: field[i] <- field[perm[i]].
+  void permute(const int* perm) {
+    for (const auto& f : registry_.all()) f.permute(perm);
+  }
+
+  DeviceArray<Vec<D>, B> x, v, a, v_xsph, v_noslip, lap_v;
+  DeviceArray<Real, B> rho, drho, p, m, rho0, number_density;
+  DeviceArray<std::uint8_t, B> material;
+  DeviceArray<std::int32_t, B> id;
+
+ private:
+  template <class T>
+  void reg(DeviceArray<T, B>& arr, FieldType type, int comps, const char* name, const char* unit,
+           const char* what) {
+    FieldHandle h;
+    h.info = FieldInfo{name, type, comps, unit, what};
+    h.permute = [this, &arr](const int* perm) {
+      DeviceArray<T, B>& tmp = scratch<T>();
+      tmp.resize(arr.size());
+      B::for_each(static_cast<int>(arr.size()), Gather<T, B>{tmp.data(), arr.data(), perm});
+      arr.swap(tmp);
+    };
+    h.to_host_double = [&arr, comps](std::vector<double>& out) {
+      const std::vector<T> hv = arr.host();
+      out.resize(hv.size() * static_cast<std::size_t>(comps));
+      const auto* raw = reinterpret_cast<const std::conditional_t<std::is_same_v<T, Vec<D>>, Real, T>*>(hv.data());
+      for (std::size_t k = 0; k < out.size(); ++k) out[k] = static_cast<double>(raw[k]);
+    };
+    registry_.add(std::move(h));
+  }
+
+  template <class T>
+  DeviceArray<T, B>& scratch() {
+    if constexpr (std::is_same_v<T, Vec<D>>) return scratch_vec_;
+    else if constexpr (std::is_same_v<T, Real>) return scratch_real_;
+    else if constexpr (std::is_same_v<T, std::uint8_t>) return scratch_u8_;
+    else return scratch_i32_;
+  }
+
+  void register_all() {
+    reg(x, FieldType::Real, D, "position", "m", "particle position");
+    reg(v, FieldType::Real, D, "velocity", "m/s", "velocity (prescribed for walls)");
+    reg(a, FieldType::Real, D, "acceleration", "m/s^2", "acceleration");
+    reg(v_xsph, FieldType::Real, D, "xsph_correction", "m/s", "XSPH drift correction (Pazdniakou eq. 76)");
+    reg(lap_v, FieldType::Real, D, "velocity_laplacian", "1/(m s)", "Laplacian of the velocity (viscous term / nu)");
+    reg(v_noslip, FieldType::Real, D, "wall_noslip_velocity", "m/s", "wall velocity seen by the viscous term");
+    reg(rho, FieldType::Real, 1, "density", "kg/m^3", "mass density");
+    reg(drho, FieldType::Real, 1, "density_rate", "kg/m^3/s", "continuity d rho/dt (Pazdniakou eq. 53a)");
+    reg(p, FieldType::Real, 1, "pressure", "Pa", "pressure from the equation of state");
+    reg(m, FieldType::Real, 1, "mass", "kg", "particle mass");
+    reg(rho0, FieldType::Real, 1, "rest_density", "kg/m^3", "reference density of the EOS");
+    reg(number_density, FieldType::Real, 1, "number_density", "1/m^3", "sum_j W_ij (Pazdniakou eq. 40)");
+    reg(material, FieldType::Byte, 1, "material", "-", "material index");
+    reg(id, FieldType::Int, 1, "id", "-", "particle id at creation");
+  }
+
+  int n_ = 0;
+  FieldRegistry registry_;
+  DeviceArray<Vec<D>, B> scratch_vec_;
+  DeviceArray<Real, B> scratch_real_;
+  DeviceArray<std::uint8_t, B> scratch_u8_;
+  DeviceArray<std::int32_t, B> scratch_i32_;
+};
+
+}  // namespace psph

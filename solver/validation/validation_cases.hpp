@@ -1,0 +1,37 @@
+#pragma once
+// The validation suite behind `poresph validate`: each case compares the solver with an analytical
+// solution or a published number and returns records {case, metric, value, reference, error,
+// tolerance, passed} (GUIDE §5). Reduced sizes by default, the published sizes with --full.
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace psph {
+
+struct ValidationRecord {
+  std::string case_name, metric;
+  double value = 0, reference = 0;
+  double error = 0;      // relative error as a fraction, or an absolute difference where stated
+  double tolerance = 0;
+  bool passed = false;
+};
+
+struct ValidationContext {
+  bool full = false;
+  std::string backend = "cpu";
+  std::ostream* log = nullptr;  // progress lines, may be null
+};
+
+struct ValidationCase {
+  std::string name, description;
+  std::function<std::vector<ValidationRecord>(const ValidationContext&)> run;
+};
+
+const std::vector<ValidationCase>& validation_cases();
+
+// Records for a metric where `error` is |value - reference| / |reference_scale|.
+ValidationRecord make_record(const std::string& case_name, const std::string& metric, double value,
+                             double reference, double error, double tolerance);
+
+}  // namespace psph

@@ -1,0 +1,140 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "kernels/corrections.hpp"
+#include "kernels/kernel.hpp"
+#include "neighbours/host_neighbours.hpp"
+#include "scene/scene_builder.hpp"
+#include "validation/operator_checks.hpp"
+
+using namespace psph;
+
+TEST(Kernel, NormalisedInEveryDimension) {
+  for (int d = 1; d <= 3; ++d)
+    for (int t = 0; t < 3; ++t)
+      EXPECT_NEAR(kernel_integral(d, static_cast<KernelType>(t), d == 3 ? 24 : 64), 1.0, 1e-3)
+          << "dimension " << d << " kernel " << t;
+}
+
+// Pazdniakou 2018 eq. 36 (support = h) and Deptulski 2021 eq. 2.11 (support = 2h) are one kernel.
+TEST(Kernel, CubicSplineMatchesBothPublishedConventions) {
+  const double h = 1e-4;  // Pazdniakou's h = support radius
+  const Kernel<3> k = Kernel<3>::make(KernelType::CubicSpline, Real(h));
+  for (double q : {0.0, 0.1, 0.3, 0.5, 0.7, 0.95, 1.0, 1.2}) {
+    const double r = q * h;
+    const double p18 = 16 / (M_PI * h * h * h) *
+                       (q < 0.5 ? 0.5 - 3 * q * q + 3 * q * q * q : q < 1 ? std::pow(1 - q, 3) : 0.0);
+    const double hs = h / 2, s = r / hs;  // thesis smoothing length
+    const double d21 = 3 / (2 * M_PI * hs * hs * hs) *
+                       (s < 1 ? 2.0 / 3 - s * s + s * s * s / 2 : s < 2 ? std::pow(2 - s, 3) / 6 : 0.0);
+    EXPECT_NEAR(k.W(Real(r)), p18, 1e-9 * p18 + 1e-6) << "q = " << q;
+    EXPECT_NEAR(k.W(Real(r)), d21, 1e-9 * d21 + 1e-6) << "q = " << q;
+  }
+  // Derivative against a central difference.
+  for (double q : {0.2, 0.45, 0.55, 0.8}) {
+    const double r = q * h, e = 1e-9;
+    EXPECT_NEAR(k.dWdr(Real(r)), (k.W(Real(r + e)) - k.W(Real(r - e))) / (2 * e), 1e-5 * std::fabs(k.dWdr(Real(r))));
+  }
+}
+
+TEST(Kernel, DerivativesMatchFiniteDifferences) {
+  for (int t = 0; t < 3; ++t) {
+    const Kernel<2> k = Kernel<2>::make(static_cast<KernelType>(t), Real(1.0));
+    for (double r = 0.05; r < 1.0; r += 0.0731) {
+      const double e = 1e-6;
+      const double fd = (k.W(Real(r + e)) - k.W(Real(r - e))) / (2 * e);
+      EXPECT_NEAR(k.dWdr(Real(r)), fd, 1e-6 + 1e-6 * std::fabs(fd)) << "kernel " << t << " r " << r;
+    }
+    EXPECT_EQ(k.W(Real(1.0)), 0.0);
+    EXPECT_EQ(k.dWdr(Real(1.0)), 0.0);
+  }
+}
+
+TEST(Corrections, DeptulskiTable21PairValues) {
+  const std::vector<double> p = deptulski_table_2_1_pairs();
+  EXPECT_NEAR(p[0], 3.879, 1e-3);
+  EXPECT_NEAR(p[1], 7.572, 1e-3);
+  EXPECT_NEAR(p[2], 0.0, 1e-12);
+  EXPECT_NEAR(p[3], 8.549, 1e-3);
+  EXPECT_NEAR(p[0] + p[1] + p[2] + p[3], 20.0, 1e-9);  // divergence of 20 x, exactly
+}
+
+// The mixed correction makes the gradient of any linear field exact, also at free boundaries and
+// on a disordered cloud.
+template <int D>
+void check_linear_gradient(unsigned seed) {
+  const int n1 = D == 1 ? 12 : D == 2 ? 10 : 7;
+  const double dx = 0.1;
+  std::vector<Vec<D>> pts;
+  std::srand(seed);
+  int total = 1;
+  for (int k = 0; k < D; ++k) total *= n1;
+  for (int s = 0; s < total; ++s) {
+    Vec<D> p;
+    int r = s;
+    for (int k = 0; k < D; ++k) {
+      const double jitter = 0.2 * dx * (std::rand() / double(RAND_MAX) - 0.5);
+      p[k] = Real((r % n1 + 0.5) * dx + jitter);
+      r /= n1;
+    }
+    pts.push_back(p);
+  }
+  Real lo[D], hi[D];
+  bool per[D];
+  for (int k = 0; k < D; ++k) lo[k] = 0, hi[k] = Real(n1 * dx), per[k] = false;
+  const Real R = Real(2.6 * dx);
+  HostNeighbours<D> nb(pts, lo, hi, per, R);
+  const Kernel<D> kern = Kernel<D>::make(KernelType::WendlandC2, R);
+  const double V = std::pow(dx, D);
+  auto vol = [&](int) { return Real(V); };
+  const double grad[3] = {1.5, -2.0, 0.75};
+  auto f = [&](int j) {
+    double s = 0.3;
+    for (int k = 0; k < D; ++k) s += grad[k] * nb.x[j][k];
+    return s;
+  };
+  for (int a = 0; a < total; ++a) {
+    const GradientCorrection<D> c = gradient_correction(nb.view(), kern, a, vol);
+    ASSERT_TRUE(c.regular);
+    Vec<D> g = Vec<D>::zero();
+    nb.view().for_each(a, [&](int b, const Vec<D>& rab, Real r) {
+      g += c.gradient(kern.W(r), kern.grad(rab, r)) * Real(V * (f(b) - f(a)));
+    });
+    for (int k = 0; k < D; ++k) EXPECT_NEAR(g[k], grad[k], 1e-9) << D << "D particle " << a << " axis " << k;
+  }
+}
+TEST(Corrections, LinearGradientExact1D) { check_linear_gradient<1>(1); }
+TEST(Corrections, LinearGradientExact2D) { check_linear_gradient<2>(2); }
+TEST(Corrections, LinearGradientExact3D) { check_linear_gradient<3>(3); }
+
+TEST(Corrections, ShepardKernelIsAPartitionOfUnity) {
+  std::vector<Vec<2>> pts;
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j) pts.push_back(Vec<2>{{Real(0.05 + 0.1 * i), Real(0.05 + 0.1 * j)}});
+  const Real lo[2] = {0, 0}, hi[2] = {Real(0.8), Real(0.8)};
+  const bool per[2] = {false, false};
+  HostNeighbours<2> nb(pts, lo, hi, per, Real(0.25));
+  const Kernel<2> kern = Kernel<2>::make(KernelType::CubicSpline, Real(0.25));
+  auto vol = [](int) { return Real(0.01); };
+  for (int a = 0; a < 64; ++a) {  // corner, edge and interior particles alike
+    const GradientCorrection<2> c = gradient_correction(nb.view(), kern, a, vol);
+    double s = 0.01 * c.kernel(kern.W(0));
+    nb.view().for_each(a, [&](int, const Vec<2>&, Real r) { s += 0.01 * c.kernel(kern.W(r)); });
+    EXPECT_NEAR(s, 1.0, 1e-12);
+  }
+}
+
+TEST(Lattice, NeighbourCountsOfPazdniakouResolutions) {
+  // support = 2, 3, 4 spacings on a cubic lattice: 26, 92, 250 neighbours (digest §2.2).
+  for (auto [ratio, expected] : {std::pair{2, 26}, std::pair{3, 92}, std::pair{4, 250}}) {
+    int count = 0;
+    for (int i = -ratio; i <= ratio; ++i)
+      for (int j = -ratio; j <= ratio; ++j)
+        for (int k = -ratio; k <= ratio; ++k)
+          if (i * i + j * j + k * k < ratio * ratio && (i || j || k)) ++count;
+    EXPECT_EQ(count, expected);
+  }
+  // And the lattice sum the masses are built from: sum_j W_ij V_j = 0.99997 at h/2 (digest §2.2).
+  EXPECT_NEAR(lattice_kernel_sum(3, KernelType::CubicSpline, 2.0, 1.0), 0.99997, 2e-5);
+}

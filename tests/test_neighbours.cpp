@@ -1,0 +1,82 @@
+// Cell-linked list against brute force: random, clustered and periodic clouds in 1D, 2D and 3D.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+
+#include "neighbours/host_neighbours.hpp"
+
+using namespace psph;
+
+enum class Cloud { Random, Clustered };
+
+template <int D>
+void compare_with_brute_force(Cloud cloud, bool periodic, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::normal_distribution<double> g(0, 0.04);
+  const int n = D == 1 ? 300 : D == 2 ? 1500 : 3000;
+  const Real L[3] = {1.0, 0.8, 0.6};
+  std::vector<Vec<D>> pts(n);
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < D; ++k) {
+      double x = cloud == Cloud::Random ? u(rng) * L[k] : (i % 3) * 0.3 * L[k] + 0.1 * L[k] + g(rng);
+      x = std::clamp(x, 0.0, double(L[k]) * (1 - 1e-9));
+      pts[i][k] = Real(x);
+    }
+  Real lo[D], hi[D];
+  bool per[D];
+  for (int k = 0; k < D; ++k) lo[k] = 0, hi[k] = L[k], per[k] = periodic && (k % 2 == 0 || D == 1);
+  const Real R = Real(0.09);
+  HostNeighbours<D> nb(pts, lo, hi, per, R);
+  const NeighbourView<D> view = nb.view();
+  long total = 0;
+  for (int a = 0; a < n; ++a) {
+    std::set<int> cell_list, brute;
+    view.for_each(a, [&](int b, const Vec<D>& rab, Real r) {
+      EXPECT_TRUE(cell_list.insert(nb.order[b]).second) << "neighbour visited twice";
+      EXPECT_NEAR(norm(rab), r, 1e-12);
+    });
+    for (int b = 0; b < n; ++b) {
+      if (b == a) continue;
+      Real r2 = 0;
+      for (int k = 0; k < D; ++k) {
+        Real d = nb.x[a][k] - nb.x[b][k];
+        if (per[k]) d -= L[k] * std::round(d / L[k]);
+        r2 += d * d;
+      }
+      if (r2 < R * R) brute.insert(nb.order[b]);
+    }
+    ASSERT_EQ(cell_list, brute) << D << "D particle " << a;
+    total += static_cast<long>(brute.size());
+  }
+  EXPECT_GT(total, n);  // the configurations do have neighbours
+}
+
+TEST(Neighbours, Random1D) { compare_with_brute_force<1>(Cloud::Random, false, 1); }
+TEST(Neighbours, Random2D) { compare_with_brute_force<2>(Cloud::Random, false, 2); }
+TEST(Neighbours, Random3D) { compare_with_brute_force<3>(Cloud::Random, false, 3); }
+TEST(Neighbours, Clustered1D) { compare_with_brute_force<1>(Cloud::Clustered, false, 4); }
+TEST(Neighbours, Clustered2D) { compare_with_brute_force<2>(Cloud::Clustered, false, 5); }
+TEST(Neighbours, Clustered3D) { compare_with_brute_force<3>(Cloud::Clustered, false, 6); }
+TEST(Neighbours, Periodic1D) { compare_with_brute_force<1>(Cloud::Random, true, 7); }
+TEST(Neighbours, Periodic2D) { compare_with_brute_force<2>(Cloud::Random, true, 8); }
+TEST(Neighbours, Periodic3D) { compare_with_brute_force<3>(Cloud::Random, true, 9); }
+TEST(Neighbours, PeriodicClustered3D) { compare_with_brute_force<3>(Cloud::Clustered, true, 10); }
+
+TEST(Neighbours, SortIsStableAndCellsAreContiguous) {
+  std::vector<int> keys{3, 1, 3, 0, 1, 3};
+  std::vector<int> perm(6), start(4), end(4);
+  CpuBackend::sort_by_cell(keys.data(), 6, 4, perm.data(), start.data(), end.data());
+  EXPECT_EQ(perm, (std::vector<int>{3, 1, 4, 0, 2, 5}));
+  EXPECT_EQ(start, (std::vector<int>{0, 1, 3, 3}));
+  EXPECT_EQ(end, (std::vector<int>{1, 3, 3, 6}));
+}
+
+TEST(Neighbours, ShortPeriodicAxisIsRejected) {
+  CellGrid<2> g;
+  const Real lo[2] = {0, 0}, hi[2] = {1, Real(0.25)};
+  const bool per[2] = {true, true};
+  EXPECT_FALSE(CellGrid<2>::make(lo, hi, per, Real(0.1), g));
+}
