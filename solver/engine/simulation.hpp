@@ -9,6 +9,7 @@
 
 #include "boundary/wall_velocity.hpp"
 #include "engine/engine.hpp"
+#include "fluid/continuity.hpp"
 #include "fluid/density.hpp"
 #include "fluid/momentum.hpp"
 #include "integrate/kick_drift.hpp"
@@ -134,12 +135,14 @@ class Simulation final : public Engine {
     if (opt_.integrator == Integrator::VelocityVerlet) {
       // Kick-drift-kick (eq. 49): a(t) is known from the previous force evaluation.
       B::for_each(n_, KickPass<D>{v, mats_, Real(0.5 * dt)});
+      continuity_pass();
       B::for_each(n_, DriftPass<D>{v, grid_, Real(dt), continuity()});
       evaluate();
       B::for_each(n_, KickPass<D>{s_.view(), mats_, Real(0.5 * dt)});
     } else {
       // Leapfrog (eq. 48): v(t+dt/2) = v(t-dt/2) + dt a(t), x(t+dt) = x(t) + dt v_hat(t+dt/2).
       B::for_each(n_, KickPass<D>{v, mats_, Real(dt)});
+      continuity_pass();
       B::for_each(n_, DriftPass<D>{v, grid_, Real(dt), continuity()});
       evaluate();
     }
@@ -190,10 +193,21 @@ class Simulation final : public Engine {
     B::for_each(n_, DensitySummationPass<D>{view_nb(), kern_, s_.view(), mats_, normalised});
   }
 
+  // d rho/dt with the velocity that drifts the particles (fluid/continuity.hpp).
+  void continuity_pass() {
+    if (!continuity()) return;
+    B::for_each(n_, ContinuityPass<D>{view_nb(), kern_, s_.view(), mats_, Real(opt_.density_diffusion),
+                                      Real(smoothing_length())});
+  }
+
   void force_pass() {
     if (has_walls_) B::for_each(n_, WallVelocityPass<D>{view_nb(), kern_, s_.view(), mats_, opt_.wall_noslip});
-    B::for_each(n_, FluidForcePass<D>{view_nb(), kern_, s_.view(), mats_, continuity(), Real(opt_.xsph),
-                                         opt_.laplacian_normalised});
+    FluidForceOptions fo;
+    fo.xsph = Real(opt_.xsph);
+    fo.laplacian_normalised = opt_.laplacian_normalised;
+    fo.artificial_viscosity = Real(opt_.artificial_viscosity);
+    fo.smoothing_length = Real(smoothing_length());
+    B::for_each(n_, FluidForcePass<D>{view_nb(), kern_, s_.view(), mats_, fo});
   }
 
   // Neighbours, density (or EOS after continuity), forces at the new positions.

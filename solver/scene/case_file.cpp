@@ -273,6 +273,8 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     o.wall_noslip = ns == "prescribed" ? WallNoSlip::Prescribed : ns == "mirror" ? WallNoSlip::Mirror : WallNoSlip::Curved;
     o.laplacian_normalised = r.boolean("laplacian_normalised", true);
     o.xsph = r.non_negative("xsph", 0.0);
+    o.artificial_viscosity = r.non_negative("artificial_viscosity", 0.0);
+    o.density_diffusion = r.non_negative("density_diffusion", 0.0);
     if (o.xsph > 1) r.fail("xsph", "expected an XSPH epsilon in [0, 1]");
     o.dt_factor = r.positive("dt_factor", 1.0);
     if (o.dt_factor > 4) r.fail("dt_factor", "expected a factor in (0, 4]");

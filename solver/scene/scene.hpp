@@ -27,6 +27,8 @@ struct SolverOptions {
   DensityMethod density = DensityMethod::Summation;
   Integrator integrator = Integrator::VelocityVerlet;
   double xsph = 0;            // XSPH epsilon
+  double artificial_viscosity = 0;  // Monaghan alpha
+  double density_diffusion = 0;     // delta-SPH delta (continuity only)
   WallNoSlip wall_noslip = WallNoSlip::Curved;
   bool laplacian_normalised = true;  // viscous Laplacian divided by its lattice sum (momentum.hpp)
   double dt_factor = 1;       // scales every time-step limit

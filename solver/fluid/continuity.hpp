@@ -1,0 +1,41 @@
+#pragma once
+// Density rate for the continuity form (Pazdniakou eq. 53a) with optional delta-SPH diffusion.
+// Run after the kick, with the velocity that also moves the particles (v at t + dt/2), so that
+// positions and densities advance together: evaluated with the velocity of the previous step
+// instead, the density lags the motion and a resting tank gains energy (measured: a closed 2D
+// tank reached 1.4 m/s in 3 s).
+#include "fluid/material.hpp"
+#include "kernels/kernel.hpp"
+#include "neighbours/cell_grid.hpp"
+#include "state/particles.hpp"
+
+namespace psph {
+
+template <int D>
+struct ContinuityPass {
+  NeighbourView<D> nb;
+  Kernel<D> kern;
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  Real density_diffusion;  // delta (0 = off)
+  Real smoothing_length;
+  PSPH_HD void operator()(int i) const {
+    const int mi = s.material[i];
+    const bool fluid_i = mats.is_fluid(mi);
+    const Vec<D> v_i = s.v[i];
+    const Real rho_i = s.rho[i];
+    Real div = 0, diffusion = 0;
+    nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
+      const Real F = kern.dWdr(r) / r;
+      const Real V_j = s.m[j] / s.rho[j];
+      div += V_j * dot(v_i - s.v[j], rij) * F;  // eq. 53a
+      // delta-SPH: 2 delta h_s c sum_j V_j (rho_j - rho_i) (r_ji . grad_i W_ij) / r^2 over fluid
+      // pairs (Molteni & Colagrossi 2009, Comput. Phys. Commun. 180:861, eq. 7).
+      if (density_diffusion > Real(0) && fluid_i && mats.is_fluid(s.material[j]))
+        diffusion -= Real(2) * V_j * (s.rho[j] - rho_i) * F;
+    });
+    s.drho[i] = rho_i * div + density_diffusion * smoothing_length * mats[mi].sound_speed * diffusion;
+  }
+};
+
+}  // namespace psph
