@@ -9,6 +9,7 @@ namespace psph {
 
 struct BenchSpec {
   std::string name;
+  std::string embedded_case;  // non-empty: time this case file instead of the fluid box
   int dimension = 3;
   long target_particles = 10000;
   double support_per_spacing = 2.0;  // Pazdniakou's resolution: support = 2 spacings

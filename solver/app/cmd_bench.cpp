@@ -36,10 +36,10 @@ int cmd_bench(bool json, const std::string& backend, bool quick) {
     if (!json) {
       char line[400];
       std::snprintf(line, sizeof line,
-                    "%-28s %dD %9d particles %5ld steps %8.3f s  %10.4g particle-steps/s  %10.4g interactions/s  "
-                    "(%.1f neighbours)",
-                    r.name.c_str(), r.dimension, r.particles, r.steps, r.seconds, r.particle_steps_per_second,
-                    r.interactions_per_second, r.neighbours);
+                    "%-24s %dD %8d particles (%8d fluid) %5ld steps %8.3f s  %10.4g fluid particle-steps/s  "
+                    "%10.4g interactions/s (%.1f neighbours)",
+                    r.name.c_str(), r.dimension, r.particles, r.fluid_particles, r.steps, r.seconds,
+                    r.fluid_particle_steps_per_second, r.interactions_per_second, r.neighbours);
       std::cout << line << std::endl;
     }
   }

@@ -17,6 +17,7 @@ namespace psph {
 
 struct CpuBackend {
   static constexpr const char* name = "cpu";
+  static constexpr bool list_rows_contiguous = true;  // neighbour lists row-major (cache lines per particle)
 
   static void* allocate(std::size_t bytes) {
     if (bytes == 0) return nullptr;

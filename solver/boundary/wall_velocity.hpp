@@ -14,7 +14,7 @@
 //               quadratic profile normal to a flat wall (our choice; references silent).
 #include "fluid/material.hpp"
 #include "kernels/kernel.hpp"
-#include "neighbours/cell_grid.hpp"
+#include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
 
 namespace psph {
@@ -23,29 +23,26 @@ enum class WallNoSlip { Prescribed = 0, Mirror = 1, Curved = 2 };
 
 template <int D>
 struct WallVelocityPass {
-  NeighbourView<D> nb;
+  NeighbourList<D> nb;
   Kernel<D> kern;
   ParticleView<D> s;
   MaterialTable<D> mats;
   WallNoSlip mode;
   PSPH_HD void operator()(int i) const {
     if (mats.is_fluid(s.material[i])) return;
-    if (mode == WallNoSlip::Prescribed) {
+    if (mode == WallNoSlip::Prescribed || !s.near_fluid[i]) {
       s.v_noslip[i] = s.v[i];
       return;
     }
     Vec<D> normal = Vec<D>::zero();
     if (mode == WallNoSlip::Curved) {
-      nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
-        if (mats.is_fluid(s.material[j])) normal -= rij * kern.W(r);  // towards the fluid
-      });
+      nb.for_each_fluid(i, [&](int, const Vec<D>& rij, Real r) PSPH_PAIR { normal -= rij * kern.W(r); });  // towards the fluid
       const Real len = norm(normal);
       normal *= len > Real(0) ? Real(1) / len : Real(0);
     }
     Vec<D> sum = Vec<D>::zero();
     Real wsum = 0;
-    nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
-      if (!mats.is_fluid(s.material[j])) return;
+    nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
       const Real w = kern.W(r);
       const Real dn = dot(rij, normal);
       sum += (s.v[j] - s.lap_v[j] * (Real(0.25) * dn * dn)) * w;

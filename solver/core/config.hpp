@@ -9,6 +9,14 @@
 #define PSPH_INLINE inline
 #endif
 
+// Forces inlining of a neighbour-loop body (a lambda) into its loop; GCC otherwise keeps large
+// bodies out of line, which costs ~30 % in the force pass (measured with perf).
+#if defined(__GNUC__) && !defined(__CUDA_ARCH__)
+#define PSPH_PAIR __attribute__((always_inline))
+#else
+#define PSPH_PAIR
+#endif
+
 namespace psph {
 
 // Working precision of every particle field. Double by default: positions of a 1e-3 m domain move

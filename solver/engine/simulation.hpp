@@ -15,22 +15,28 @@
 #include "integrate/kick_drift.hpp"
 #include "integrate/timestep.hpp"
 #include "neighbours/cell_grid.hpp"
+#include "neighbours/fluid_proximity.hpp"
+#include "neighbours/neighbour_list.hpp"
 #include "scene/scene.hpp"
 #include "state/particles.hpp"
 
 namespace psph {
 
+// Sort key: two buckets per cell, fluid particles first (neighbours/cell_grid.hpp).
 template <int D>
 struct CellKeyPass {
   CellGrid<D> grid;
   const Vec<D>* x;
+  const std::uint8_t* material;
+  MaterialTable<D> mats;
   int* key;
-  PSPH_HD void operator()(int i) const { key[i] = grid.cell_of(x[i]); }
+  PSPH_HD void operator()(int i) const { key[i] = 2 * grid.cell_of(x[i]) + (mats.is_fluid(material[i]) ? 0 : 1); }
 };
 
+// Neighbours within the support radius of a fluid particle (0 for others).
 template <int D>
 struct NeighbourCount {
-  NeighbourView<D> nb;
+  NeighbourList<D> nb;
   const std::uint8_t* material;
   MaterialTable<D> mats;
   PSPH_HD Real operator()(int i) const {
@@ -67,7 +73,12 @@ class Simulation final : public Engine {
     Real lo[D], hi[D];
     bool per[D];
     for (int k = 0; k < D; ++k) lo[k] = Real(sc.lower[k]), hi[k] = Real(sc.upper[k]), per[k] = sc.periodic[k];
-    if (!CellGrid<D>::make(lo, hi, per, Real(opt_.support_radius), grid_))
+    // List radius R (1 + skin), reduced where a periodic axis needs it to keep 3 cells.
+    list_radius_ = opt_.support_radius * (1 + opt_.neighbour_skin);
+    for (int k = 0; k < D; ++k)
+      if (per[k]) list_radius_ = std::min(list_radius_, (sc.upper[k] - sc.lower[k]) / 3);
+    list_radius_ = std::max(list_radius_, opt_.support_radius);
+    if (!CellGrid<D>::make(lo, hi, per, Real(list_radius_), grid_))
       throw std::invalid_argument("a periodic axis is shorter than 3 support radii");
     kern_ = Kernel<D>::make(opt_.kernel, Real(opt_.support_radius));
     mats_.count = static_cast<int>(sc.materials.size());
@@ -80,12 +91,12 @@ class Simulation final : public Engine {
         nu_max_ = std::max(nu_max_, double(mats_.m[k].viscosity / mats_.m[k].rest_density));
     }
     upload(sc);
-    cell_start_.resize(grid_.total), cell_end_.resize(grid_.total);
+    bucket_start_.resize(2 * grid_.total), bucket_end_.resize(2 * grid_.total), cell_near_.resize(grid_.total);
     build_neighbours();
     if (continuity()) {
       B::for_each(n_, EquationOfStatePass<D>{s_.view(), mats_});
     } else {
-      density_pass();
+      density_pass(true);  // every wall's rest density is its initial summed density
       B::for_each(n_, SetWallRestDensity<D>{s_.view(), mats_});
     }
     force_pass();
@@ -172,25 +183,60 @@ class Simulation final : public Engine {
     }
     s_.x.upload(x), s_.v.upload(v), s_.m.upload(m), s_.rho.upload(rho), s_.rho0.upload(rho);
     s_.material.upload(mat), s_.id.upload(id);
-    keys_.resize(n_), perm_.resize(n_);
+    s_.near_fluid.upload(std::vector<std::uint8_t>(n_, 1));  // recomputed per step when there are walls
+    keys_.resize(n_), perm_.resize(n_), nb_count_.resize(n_), nb_fluid_count_.resize(n_);
   }
 
-  NeighbourView<D> view_nb() const {
-    return NeighbourView<D>{grid_, s_.x.data(), cell_start_.data(), cell_end_.data(),
-                            kern_.support * kern_.support};
+  NeighbourView<D> view_cells() const {
+    return NeighbourView<D>{grid_, s_.x.data(), bucket_start_.data(), bucket_end_.data(),
+                            Real(list_radius_ * list_radius_)};
+  }
+  NeighbourList<D> view_nb() const {
+    return NeighbourList<D>{grid_, s_.x.data(), nb_index_.data(), nb_count_.data(), nb_fluid_count_.data(),
+                            list_stride_i(), list_stride_k(), kern_.support * kern_.support};
+  }
+  int list_stride_i() const { return B::list_rows_contiguous ? capacity_ : 1; }
+  int list_stride_k() const { return B::list_rows_contiguous ? 1 : n_; }
+
+  // Neighbour lists from the cell list; grows the capacity when a particle has more neighbours.
+  void build_lists() {
+    for (;;) {
+      if (nb_index_.size() < std::size_t(capacity_) * n_) nb_index_.resize(std::size_t(capacity_) * n_);
+      B::for_each(n_, BuildNeighbourList<D>{view_cells(), s_.material.data(), mats_, s_.near_fluid.data(),
+                                            !continuity(), nb_index_.data(), nb_count_.data(),
+                                            nb_fluid_count_.data(), capacity_, list_stride_i(), list_stride_k()});
+      const int most = n_ ? B::template max_of<int>(n_, ListCount<D>{nb_count_.data()}) : 0;
+      if (most <= capacity_) return;
+      capacity_ = most + most / 4 + 4;
+    }
   }
 
-  // Cell keys, sort by cell, reorder every registered field, cell ranges.
+  // Cell keys, sort by cell (fluid first in each cell), reorder every registered field, ranges.
   void build_neighbours() {
-    B::for_each(n_, CellKeyPass<D>{grid_, s_.x.data(), keys_.data()});
-    B::sort_by_cell(keys_.data(), n_, grid_.total, perm_.data(), cell_start_.data(), cell_end_.data());
+    B::for_each(n_, CellKeyPass<D>{grid_, s_.x.data(), s_.material.data(), mats_, keys_.data()});
+    B::sort_by_cell(keys_.data(), n_, 2 * grid_.total, perm_.data(), bucket_start_.data(), bucket_end_.data());
     s_.permute(perm_.data());
+    if (has_walls_) {
+      B::for_each(grid_.total, CellNearFluid<D>{view_cells(), cell_near_.data()});
+      B::for_each(n_, NearFluid<D>{grid_, s_.x.data(), cell_near_.data(), s_.near_fluid.data()});
+    }
+    build_lists();
+    x_build_.resize(n_);
+    B::copy(x_build_.data(), s_.x.data(), sizeof(Vec<D>) * n_);
+    ++list_builds_;
   }
 
-  void density_pass() {
+  // The lists hold every pair within R as long as no particle moved by half the skin.
+  bool lists_expired() {
+    const double half_skin = 0.5 * (list_radius_ - opt_.support_radius);
+    if (half_skin <= 0) return true;
+    return B::template max_of<Real>(n_, DisplacementSinceBuild<D>{grid_, s_.x.data(), x_build_.data()}) >= half_skin;
+  }
+
+  void density_pass(bool all_particles = false) {
     const bool normalised = opt_.density == DensityMethod::NormalisedSummation;
     if (normalised) B::for_each(n_, NumberDensityPass<D>{view_nb(), kern_, s_.view()});
-    B::for_each(n_, DensitySummationPass<D>{view_nb(), kern_, s_.view(), mats_, normalised});
+    B::for_each(n_, DensitySummationPass<D>{view_nb(), kern_, s_.view(), mats_, normalised, all_particles});
   }
 
   // d rho/dt with the velocity that drifts the particles (fluid/continuity.hpp).
@@ -212,7 +258,7 @@ class Simulation final : public Engine {
 
   // Neighbours, density (or EOS after continuity), forces at the new positions.
   void evaluate() {
-    build_neighbours();
+    if (lists_expired()) build_neighbours();
     if (continuity()) B::for_each(n_, EquationOfStatePass<D>{s_.view(), mats_});
     else density_pass();
     force_pass();
@@ -252,7 +298,13 @@ class Simulation final : public Engine {
   Kernel<D> kern_{};
   MaterialTable<D> mats_{};
   ParticleState<D, B> s_;
-  DeviceArray<int, B> keys_, perm_, cell_start_, cell_end_;
+  DeviceArray<int, B> keys_, perm_, bucket_start_, bucket_end_;
+  DeviceArray<std::uint8_t, B> cell_near_;
+  DeviceArray<int, B> nb_index_, nb_count_, nb_fluid_count_;
+  int capacity_ = 32;
+  DeviceArray<Vec<D>, B> x_build_;  // positions at the last list build
+  double list_radius_ = 0;
+  long list_builds_ = 0;
   int n_ = 0;
   double t_ = 0, dt_ = 0, dt_first_ = 0, c_max_ = 0, nu_max_ = 0;
   long steps_ = 0;

@@ -6,14 +6,14 @@
 // tank reached 1.4 m/s in 3 s).
 #include "fluid/material.hpp"
 #include "kernels/kernel.hpp"
-#include "neighbours/cell_grid.hpp"
+#include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
 
 namespace psph {
 
 template <int D>
 struct ContinuityPass {
-  NeighbourView<D> nb;
+  NeighbourList<D> nb;
   Kernel<D> kern;
   ParticleView<D> s;
   MaterialTable<D> mats;
@@ -24,8 +24,12 @@ struct ContinuityPass {
     const bool fluid_i = mats.is_fluid(mi);
     const Vec<D> v_i = s.v[i];
     const Real rho_i = s.rho[i];
+    if (!fluid_i && !s.near_fluid[i]) {
+      s.drho[i] = Real(0);
+      return;
+    }
     Real div = 0, diffusion = 0;
-    nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
+    auto pair = [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
       const Real F = kern.dWdr(r) / r;
       const Real V_j = s.m[j] / s.rho[j];
       div += V_j * dot(v_i - s.v[j], rij) * F;  // eq. 53a
@@ -33,7 +37,9 @@ struct ContinuityPass {
       // pairs (Molteni & Colagrossi 2009, Comput. Phys. Commun. 180:861, eq. 7).
       if (density_diffusion > Real(0) && fluid_i && mats.is_fluid(s.material[j]))
         diffusion -= Real(2) * V_j * (s.rho[j] - rho_i) * F;
-    });
+    };
+    if (fluid_i) nb.for_each(i, pair);
+    else nb.for_each_fluid(i, pair);  // a wall's density answers the fluid only
     s.drho[i] = rho_i * div + density_diffusion * smoothing_length * mats[mi].sound_speed * diffusion;
   }
 };

@@ -4,7 +4,7 @@
 #include "fluid/eos.hpp"
 #include "fluid/material.hpp"
 #include "kernels/kernel.hpp"
-#include "neighbours/cell_grid.hpp"
+#include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
 
 namespace psph {
@@ -12,12 +12,12 @@ namespace psph {
 // n_i = sum_j W_ij, self included (Pazdniakou eq. 40).
 template <int D>
 struct NumberDensityPass {
-  NeighbourView<D> nb;
+  NeighbourList<D> nb;
   Kernel<D> kern;
   ParticleView<D> s;
   PSPH_HD void operator()(int i) const {
     Real n = kern.W(Real(0));
-    nb.for_each(i, [&](int, const Vec<D>&, Real r) { n += kern.W(r); });
+    nb.for_each(i, [&](int, const Vec<D>&, Real r) PSPH_PAIR { n += kern.W(r); });
     s.number_density[i] = n;
   }
 };
@@ -27,16 +27,18 @@ struct NumberDensityPass {
 // then the pressure from the material's equation of state.
 template <int D>
 struct DensitySummationPass {
-  NeighbourView<D> nb;
+  NeighbourList<D> nb;
   Kernel<D> kern;
   ParticleView<D> s;
   MaterialTable<D> mats;
   bool normalised;
+  bool all_particles;  // false: walls far from any fluid keep their density and pressure
   PSPH_HD void operator()(int i) const {
+    if (!all_particles && !s.near_fluid[i]) return;
     const Real w0 = kern.W(Real(0));
     Real num = s.m[i] * w0;
     Real den = normalised ? w0 / s.number_density[i] : Real(1);
-    nb.for_each(i, [&](int j, const Vec<D>&, Real r) {
+    nb.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
       const Real w = kern.W(r);
       num += s.m[j] * w;
       if (normalised) den += w / s.number_density[j];

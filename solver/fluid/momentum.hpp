@@ -3,7 +3,7 @@
 // viscosity and XSPH. Gather form: each particle writes only its own outputs.
 #include "fluid/material.hpp"
 #include "kernels/kernel.hpp"
-#include "neighbours/cell_grid.hpp"
+#include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
 
 namespace psph {
@@ -17,7 +17,7 @@ struct FluidForceOptions {
 
 template <int D>
 struct FluidForcePass {
-  NeighbourView<D> nb;
+  NeighbourList<D> nb;
   Kernel<D> kern;
   ParticleView<D> s;
   MaterialTable<D> mats;
@@ -44,7 +44,7 @@ struct FluidForcePass {
       s.v_xsph[i] = Vec<D>::zero();
       return;
     }
-    nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
+    nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
       const int mj = s.material[j];
       const Real rho_j = s.rho[j];
       const Real m_j = s.m[j];

@@ -29,16 +29,17 @@ struct GradientCorrection {
   PSPH_HD Vec<D> gradient(Real W, const Vec<D>& gradW) const { return K * shepard_gradient(W, gradW); }
 };
 
+// NB is any neighbour provider with for_each(i, f(j, r_ij, r)) (cell view or list).
 // Shepard sum S_a = sum_b V_b W_ab including the particle itself. `volume(j)` returns V_j.
-template <int D, class Volume>
-PSPH_HD Real shepard_sum(const NeighbourView<D>& nb, const Kernel<D>& kern, int i, const Volume& volume) {
+template <int D, class NB, class Volume>
+PSPH_HD Real shepard_sum(const NB& nb, const Kernel<D>& kern, int i, const Volume& volume) {
   Real s = volume(i) * kern.W(Real(0));
   nb.for_each(i, [&](int j, const Vec<D>&, Real r) { s += volume(j) * kern.W(r); });
   return s;
 }
 
-template <int D, class Volume>
-PSPH_HD GradientCorrection<D> gradient_correction(const NeighbourView<D>& nb, const Kernel<D>& kern, int i,
+template <int D, class NB, class Volume>
+PSPH_HD GradientCorrection<D> gradient_correction(const NB& nb, const Kernel<D>& kern, int i,
                                                   const Volume& volume) {
   GradientCorrection<D> c;
   c.shepard = volume(i) * kern.W(Real(0));

@@ -75,21 +75,23 @@ struct CellGrid {
   }
 };
 
-// Read-only view of the sorted cell list: particles are stored in cell order, and the particles of
-// cell c are [cell_start[c], cell_end[c]).
+// Read-only view of the sorted cell list. Particles are stored in cell order and, within a cell,
+// fluid particles first: bucket 2c holds the fluid particles of cell c and bucket 2c+1 the others
+// (walls), each as [bucket_start, bucket_end). Passes that only need fluid neighbours (wall
+// boundary conditions) then never visit wall-wall candidates.
 template <int D>
 struct NeighbourView {
   CellGrid<D> grid;
   const Vec<D>* x;
-  const int* cell_start;
-  const int* cell_end;
+  const int* bucket_start;
+  const int* bucket_end;
   Real support2;
 
-  // Calls f(j, x_i - x_j, r) for every particle j != i with r < support (gather order is fixed by
-  // the cell order, so sums are reproducible).
+  PSPH_HD bool cell_has_fluid(int key) const { return bucket_end[2 * key] > bucket_start[2 * key]; }
+
+  // Calls f(key) for each distinct cell of the 3^D stencil around position xi.
   template <class F>
-  PSPH_HD void for_each(int i, F&& f) const {
-    const Vec<D> xi = x[i];
+  PSPH_HD void for_each_cell(const Vec<D>& xi, F&& f) const {
     int ci[D];
     for (int k = 0; k < D; ++k) ci[k] = grid.axis_cell(k, xi[k]);
     constexpr int nstencil = D == 1 ? 3 : D == 2 ? 9 : 27;
@@ -106,15 +108,41 @@ struct NeighbourView {
         }
         key = key * grid.ncell[k] + c;
       }
-      if (skip) continue;
-      const int end = cell_end[key];
-      for (int j = cell_start[key]; j < end; ++j) {
-        if (j == i) continue;
-        const Vec<D> d = grid.separation(xi, x[j]);
-        const Real r2 = norm2(d);
-        if (r2 < support2) f(j, d, sqrt(r2));
-      }
+      if (!skip) f(key);
     }
+  }
+
+  // Calls f(j, x_i - x_j, r) for every particle j != i with r < support (gather order is fixed by
+  // the cell order, so sums are reproducible).
+  template <class F>
+  PSPH_HD void for_each(int i, F&& f) const {
+    visit(i, 0, 2, f);
+  }
+  // The same over fluid neighbours only, and over the others only.
+  template <class F>
+  PSPH_HD void for_each_fluid(int i, F&& f) const {
+    visit(i, 0, 1, f);
+  }
+  template <class F>
+  PSPH_HD void for_each_non_fluid(int i, F&& f) const {
+    visit(i, 1, 2, f);
+  }
+
+ private:
+  template <class F>
+  PSPH_HD void visit(int i, int first, int last, F& f) const {
+    const Vec<D> xi = x[i];
+    for_each_cell(xi, [&](int key) {
+      for (int b = 2 * key + first; b < 2 * key + last; ++b) {
+        const int end = bucket_end[b];
+        for (int j = bucket_start[b]; j < end; ++j) {
+          if (j == i) continue;
+          const Vec<D> d = grid.separation(xi, x[j]);
+          const Real r2 = norm2(d);
+          if (r2 < support2) f(j, d, sqrt(r2));
+        }
+      }
+    });
   }
 };
 

@@ -12,7 +12,7 @@ template <int D>
 struct HostNeighbours {
   CellGrid<D> grid{};
   std::vector<Vec<D>> x;
-  std::vector<int> order, cell_start, cell_end;
+  std::vector<int> order, bucket_start, bucket_end;
   Real support = 0;
 
   HostNeighbours(const std::vector<Vec<D>>& points, const Real* lo, const Real* hi, const bool* periodic,
@@ -21,14 +21,14 @@ struct HostNeighbours {
     CellGrid<D>::make(lo, hi, periodic, support_radius, grid);
     const int n = static_cast<int>(points.size());
     std::vector<int> keys(n);
-    for (int i = 0; i < n; ++i) keys[i] = grid.cell_of(points[i]);
-    order.resize(n), cell_start.resize(grid.total), cell_end.resize(grid.total);
-    CpuBackend::sort_by_cell(keys.data(), n, grid.total, order.data(), cell_start.data(), cell_end.data());
+    for (int i = 0; i < n; ++i) keys[i] = 2 * grid.cell_of(points[i]);  // every point in a "fluid" bucket
+    order.resize(n), bucket_start.resize(2 * grid.total), bucket_end.resize(2 * grid.total);
+    CpuBackend::sort_by_cell(keys.data(), n, 2 * grid.total, order.data(), bucket_start.data(), bucket_end.data());
     x.resize(n);
     for (int k = 0; k < n; ++k) x[k] = points[order[k]];
   }
   NeighbourView<D> view() const {
-    return NeighbourView<D>{grid, x.data(), cell_start.data(), cell_end.data(), support * support};
+    return NeighbourView<D>{grid, x.data(), bucket_start.data(), bucket_end.data(), support * support};
   }
 };
 

@@ -279,6 +279,8 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     o.dt_factor = r.positive("dt_factor", 1.0);
     if (o.dt_factor > 4) r.fail("dt_factor", "expected a factor in (0, 4]");
     o.fixed_dt = r.non_negative("dt", 0.0);
+    o.neighbour_skin = r.non_negative("neighbour_skin", 0.1);
+    if (o.neighbour_skin > 1) r.fail("neighbour_skin", "expected a fraction of the support radius in [0, 1]");
     r.finish();
   }
   {

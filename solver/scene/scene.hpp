@@ -32,6 +32,7 @@ struct SolverOptions {
   WallNoSlip wall_noslip = WallNoSlip::Curved;
   bool laplacian_normalised = true;  // viscous Laplacian divided by its lattice sum (momentum.hpp)
   double dt_factor = 1;       // scales every time-step limit
+  double neighbour_skin = 0.1;  // Verlet-list skin as a fraction of the support radius
   double fixed_dt = 0;        // > 0: constant step instead of the adaptive one
   double min_dt_ratio = 1e-4; // a step below this fraction of the first step is a collapse
 };

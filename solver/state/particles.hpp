@@ -28,6 +28,7 @@ struct ParticleView {
   Real* number_density;  // sum_j W_ij (for eq. 41)
   std::uint8_t* material;
   std::int32_t* id;   // particle id at creation, to follow particles across reorderings
+  const std::uint8_t* near_fluid;  // 1 where a fluid particle may be within the support (neighbours/)
 };
 
 template <class T, class B>
@@ -52,14 +53,14 @@ class ParticleState {
     n_ = n;
     x.resize(n), v.resize(n), a.resize(n), v_xsph.resize(n), v_noslip.resize(n), lap_v.resize(n);
     rho.resize(n), drho.resize(n), p.resize(n), m.resize(n), rho0.resize(n), number_density.resize(n);
-    material.resize(n), id.resize(n);
+    material.resize(n), id.resize(n), near_fluid.resize(n);
     a.zero(), v_xsph.zero(), v_noslip.zero(), lap_v.zero(), drho.zero(), p.zero(), number_density.zero();
   }
 
   ParticleView<D> view() {
     return ParticleView<D>{n_,         x.data(),    v.data(),    a.data(),  v_xsph.data(), v_noslip.data(), lap_v.data(),
                            rho.data(), drho.data(), p.data(),    m.data(),  rho0.data(),
-                           number_density.data(),   material.data(), id.data()};
+                           number_density.data(),   material.data(), id.data(), near_fluid.data()};
   }
 
   // Reorders every registered field: field[i] <- field[perm[i]].
@@ -71,6 +72,7 @@ class ParticleState {
   DeviceArray<Real, B> rho, drho, p, m, rho0, number_density;
   DeviceArray<std::uint8_t, B> material;
   DeviceArray<std::int32_t, B> id;
+  DeviceArray<std::uint8_t, B> near_fluid;  // not registered: recomputed after every reordering
 
  private:
   template <class T>

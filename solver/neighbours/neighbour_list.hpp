@@ -1,0 +1,91 @@
+#pragma once
+// Verlet neighbour lists built from the cell list with a radius R (1 + skin) and kept until some
+// particle has moved by half the skin. The cell search tests 27 cells (3^3 R^3 of space for a
+// 4/3 pi R^3 sphere: ~15 % of the candidates are neighbours); the passes then visit only listed
+// pairs, each still tested against R. Fluid neighbours come first in each list, so wall passes
+// can stop after them.
+// Layout: neighbour k of particle i is at i * stride_i + k * stride_k: row-major on the CPU,
+// column-major on the GPU (coalesced loads across a warp).
+#include "fluid/material.hpp"
+#include "neighbours/cell_grid.hpp"
+
+namespace psph {
+
+template <int D>
+struct NeighbourList {
+  CellGrid<D> grid;
+  const Vec<D>* x;
+  const int* index;
+  const int* count;        // neighbours of i
+  const int* fluid_count;  // of which fluid (listed first)
+  int stride_i, stride_k;
+  Real support2;           // R^2: listed pairs beyond the support are skipped
+
+  template <class F>
+  PSPH_HD void for_each(int i, F&& f) const {
+    visit(i, 0, count[i], f);
+  }
+  template <class F>
+  PSPH_HD void for_each_fluid(int i, F&& f) const {
+    visit(i, 0, fluid_count[i], f);
+  }
+
+ private:
+  template <class F>
+  PSPH_HD void visit(int i, int begin, int end, F& f) const {
+    const Vec<D> xi = x[i];
+    const int* row = index + i * stride_i;
+    for (int k = begin; k < end; ++k) {
+      const int j = row[k * stride_k];
+      const Vec<D> d = grid.separation(xi, x[j]);
+      const Real r2 = norm2(d);
+      if (r2 < support2) f(j, d, sqrt(r2));
+    }
+  }
+};
+
+// Fills the lists from the cell list; count[i] may exceed capacity, in which case the caller
+// grows the capacity and builds again. Walls need no list far from the fluid, and near it only
+// their fluid neighbours unless `walls_need_walls` (wall density by summation).
+template <int D>
+struct BuildNeighbourList {
+  NeighbourView<D> cells;
+  const std::uint8_t* material;
+  MaterialTable<D> mats;
+  const std::uint8_t* near_fluid;  // per particle (neighbours/fluid_proximity.hpp)
+  bool walls_need_walls;
+  int* index;
+  int* count;
+  int* fluid_count;
+  int capacity, stride_i, stride_k;
+  PSPH_HD void operator()(int i) const {
+    int n = 0;
+    int* row = index + i * stride_i;
+    auto add = [&](int j, const Vec<D>&, Real) {
+      if (n < capacity) row[n * stride_k] = j;
+      ++n;
+    };
+    const bool fluid = mats.is_fluid(material[i]);
+    if (fluid || near_fluid[i]) cells.for_each_fluid(i, add);
+    fluid_count[i] = n;
+    if (fluid || (near_fluid[i] && walls_need_walls)) cells.for_each_non_fluid(i, add);
+    count[i] = n;
+  }
+};
+
+// Distance moved since the lists were built (minimum image on periodic axes).
+template <int D>
+struct DisplacementSinceBuild {
+  CellGrid<D> grid;
+  const Vec<D>* x;
+  const Vec<D>* x_build;
+  PSPH_HD Real operator()(int i) const { return norm(grid.separation(x[i], x_build[i])); }
+};
+
+template <int D>
+struct ListCount {
+  const int* count;
+  PSPH_HD int operator()(int i) const { return count[i]; }
+};
+
+}  // namespace psph
