@@ -4,12 +4,66 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/bench_accuracy.hpp"
 #include "app/bench_cases.hpp"
+#include "app/bench_stability.hpp"
 #include "app/commands.hpp"
 
 namespace psph {
 
-int cmd_bench(bool json, const std::string& backend, bool quick) {
+namespace {
+
+int accuracy(bool json, const std::string& backend, bool quick) {
+  const auto recs = accuracy_sweep(backend, !quick, json ? &std::cerr : &std::cout);
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& r : recs)
+    out.push_back({{"case", r.case_name},
+                   {"kernel", r.kernel},
+                   {"support_per_spacing", r.support_per_spacing},
+                   {"particles", r.particles},
+                   {"steps", r.steps},
+                   {"seconds", r.seconds},
+                   {"error", r.error},
+                   {"backend", backend}});
+  if (json) std::cout << out.dump(2) << "\n";
+  return 0;
+}
+
+int stability(bool json, const std::string& backend, bool quick) {
+  const auto recs = stability_sweep(backend, quick, json ? &std::cerr : &std::cout);
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& r : recs)
+    out.push_back({{"case", r.case_name},
+                   {"dt_factor", r.dt_factor},
+                   {"jitter", r.jitter},
+                   {"stable", r.stable},
+                   {"diagnostic", r.diagnostic},
+                   {"end_time", r.end_time},
+                   {"steps", r.steps},
+                   {"density_deviation_max", r.density_deviation_max},
+                   {"seconds", r.seconds}});
+  if (json) std::cout << out.dump(2) << "\n";
+  // The largest factor below which every run of a (case, jitter) was stable.
+  if (!json)
+    for (std::size_t k = 0; k < recs.size();) {
+      double largest = 0;
+      bool ok = true;
+      std::size_t m = k;
+      for (; m < recs.size() && recs[m].case_name == recs[k].case_name && recs[m].jitter == recs[k].jitter; ++m) {
+        ok = ok && recs[m].stable;
+        if (ok) largest = recs[m].dt_factor;
+      }
+      std::cout << recs[k].case_name << " jitter " << recs[k].jitter << ": largest stable dt_factor " << largest << "\n";
+      k = m;
+    }
+  return 0;
+}
+
+}  // namespace
+
+int cmd_bench(bool json, const std::string& backend, bool quick, bool accuracy_sweep, bool stability_sweep_) {
+  if (accuracy_sweep) return accuracy(json, backend, quick);
+  if (stability_sweep_) return stability(json, backend, quick);
   nlohmann::json out = nlohmann::json::array();
   for (const BenchSpec& spec : bench_specs(backend, quick)) {
     BenchResult r;

@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
   check->add_option("case", case_path, "case file (TOML)")->required();
 
   std::vector<std::string> names;
-  bool full = false, json = false, quick = false;
+  bool full = false, json = false, quick = false, accuracy = false, stability = false;
   std::string vbackend = "cpu";
   auto* validate = app.add_subcommand("validate", "run the validation cases against their references");
   validate->add_option("names", names, "validation cases to run (default: all)");
@@ -31,7 +31,9 @@ int main(int argc, char** argv) {
 
   auto* bench = app.add_subcommand("bench", "measure the speed of the solver");
   bench->add_flag("--json", json, "print JSON records");
-  bench->add_flag("--quick", quick, "small sizes only (a smoke run)");
+  bench->add_flag("--quick", quick, "small sizes only (a smoke run); with --accuracy: no sphere arrays");
+  bench->add_flag("--accuracy", accuracy, "run time against error over kernels and resolutions");
+  bench->add_flag("--stability", stability, "sweep the time-step factor and the initial disorder");
   bench->add_option("--backend", vbackend, "cpu or cuda")->check(CLI::IsMember(backends));
 
   auto* demo = app.add_subcommand("demo", "run the embedded default case");
@@ -43,7 +45,7 @@ int main(int argc, char** argv) {
   if (*run) return psph::cmd_run(case_path, ro);
   if (*check) return psph::cmd_check(case_path);
   if (*validate) return psph::cmd_validate(names, full, json, vbackend);
-  if (*bench) return psph::cmd_bench(json, vbackend, quick);
+  if (*bench) return psph::cmd_bench(json, vbackend, quick, accuracy, stability);
   if (*demo) return psph::cmd_demo(ro);
   return 1;
 }

@@ -201,6 +201,8 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
   {
     Reader r(top.table("discretisation", true), file, "discretisation");
     o.spacing = r.positive("spacing");
+    o.jitter = r.non_negative("jitter", 0.0);
+    if (o.jitter > 0.5) r.fail("jitter", "expected a fraction of the spacing in [0, 0.5]");
     o.kernel = kernel_from(r.choice("kernel", {"cubic_spline", "wendland_c2", "quintic_spline"}, "cubic_spline"));
     const bool has_R = r.has("support_radius"), has_h = r.has("smoothing_length");
     if (has_R == has_h) r.fail("support_radius", "give exactly one of support_radius and smoothing_length");

@@ -12,4 +12,7 @@ struct EmbeddedCase {
 
 const std::vector<EmbeddedCase>& embedded_cases();
 
+// The text of an embedded case by name; throws std::invalid_argument for an unknown name.
+std::string embedded_case_text(const std::string& name);
+
 }  // namespace psph

@@ -24,6 +24,7 @@ struct SolverOptions {
   KernelType kernel = KernelType::CubicSpline;
   double support_radius = 0;  // m
   double spacing = 0;         // initial particle spacing (m)
+  double jitter = 0;          // initial disorder: fluid positions moved by up to this fraction of the spacing
   DensityMethod density = DensityMethod::Summation;
   Integrator integrator = Integrator::VelocityVerlet;
   double xsph = 0;            // XSPH epsilon

@@ -1,6 +1,7 @@
 #include "scene/scene_builder.hpp"
 
 #include <cmath>
+#include <random>
 
 namespace psph {
 namespace {
@@ -60,6 +61,8 @@ void build_particles(Case& c) {
   sc.x.clear(), sc.v.clear(), sc.mass.clear(), sc.material.clear();
   long fluid = 0;
   int idx[3] = {0, 0, 0};
+  std::mt19937_64 rng(12345);  // fixed seed: the same disorder on every run
+  std::uniform_real_distribution<double> jitter(-sc.options.jitter * dx, sc.options.jitter * dx);
   for (long s = 0; s < total; ++s) {
     double x[3];
     for (int k = 0; k < D; ++k) x[k] = sc.lower[k] + (idx[k] + 0.5) * dx;
@@ -68,7 +71,12 @@ void build_particles(Case& c) {
       if (contains(g, x, D)) owner = &g;
     if (owner && owner->material >= 0) {
       const SceneMaterial& m = sc.materials[owner->material];
-      for (int k = 0; k < D; ++k) sc.x.push_back(x[k]), sc.v.push_back(owner->velocity[k]);
+      const bool is_fluid = m.props.kind == MaterialKind::Fluid;
+      for (int k = 0; k < D; ++k) {
+        double xk = x[k] + (is_fluid && sc.options.jitter > 0 ? jitter(rng) : 0.0);
+        if (sc.periodic[k]) xk = xk < sc.lower[k] ? xk + (sc.upper[k] - sc.lower[k]) : xk >= sc.upper[k] ? xk - (sc.upper[k] - sc.lower[k]) : xk;
+        sc.x.push_back(xk), sc.v.push_back(owner->velocity[k]);
+      }
       sc.mass.push_back(m.props.rest_density / n_sum);
       sc.material.push_back(owner->material);
       if (m.props.kind == MaterialKind::Fluid) ++fluid;

@@ -1,0 +1,23 @@
+#pragma once
+// Channel flows between walls at x = 0 and x = L = 1e-3 m (plane Poiseuille, Poiseuille-Couette):
+// the error against the transient series of Pazdniakou 2018 eq. 77 at given times.
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "scene/case_file.hpp"
+
+namespace psph {
+
+struct ChannelErrors {
+  std::vector<double> times, errors;  // max |v - v_exact| / v_peak over fluid particles, per time
+  std::vector<double> peaks;          // v_peak per time (m/s)
+  long steps = 0;
+  int particles = 0;
+  double seconds = 0;                 // wall time of the run
+};
+
+// `c` must have its particles built; the flow is along the last axis, the walls normal to x.
+ChannelErrors channel_flow_errors(const Case& c, const std::string& backend, const std::vector<double>& times);
+
+}  // namespace psph
