@@ -5,7 +5,7 @@ PRESET ?= $(if $(NVCC),cuda,cpu-release)
 BUILD  := build/$(PRESET)
 JOBS   ?= $(shell nproc)
 
-.PHONY: all deps build test demo validate validate-full bench clean
+.PHONY: all deps build test demo validate validate-full bench bench-accuracy clean
 
 all: build
 
@@ -32,6 +32,11 @@ validate-full: build
 
 bench: build
 	@$(BUILD)/solver/poresph bench
+
+# Run time against error; writes bench/accuracy.json and bench/accuracy.png.
+bench-accuracy: build
+	@$(BUILD)/solver/poresph bench --accuracy --json > bench/accuracy.json
+	@/usr/bin/python3 bench/plot_accuracy.py bench/accuracy.json bench/accuracy.png
 
 clean:
 	rm -rf build

@@ -7,10 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "boundary/wall_pressure.hpp"
 #include "boundary/wall_velocity.hpp"
 #include "engine/engine.hpp"
 #include "fluid/continuity.hpp"
 #include "fluid/density.hpp"
+#include "fluid/shifting.hpp"
 #include "fluid/momentum.hpp"
 #include "integrate/kick_drift.hpp"
 #include "integrate/timestep.hpp"
@@ -60,7 +62,7 @@ struct SetWallRestDensity {
   PSPH_HD void operator()(int i) const {
     if (!mats.is_fluid(s.material[i])) {
       s.rho0[i] = s.rho[i];
-      s.p[i] = Real(0);
+      s.p[i] = mats[s.material[i]].background_pressure;
     }
   }
 };
@@ -148,14 +150,14 @@ class Simulation final : public Engine {
       B::for_each(n_, KickPass<D>{v, mats_, Real(0.5 * dt)});
       continuity_pass();
       B::for_each(n_, DriftPass<D>{v, grid_, Real(dt), continuity()});
-      evaluate();
+      evaluate(dt);
       B::for_each(n_, KickPass<D>{s_.view(), mats_, Real(0.5 * dt)});
     } else {
       // Leapfrog (eq. 48): v(t+dt/2) = v(t-dt/2) + dt a(t), x(t+dt) = x(t) + dt v_hat(t+dt/2).
       B::for_each(n_, KickPass<D>{v, mats_, Real(dt)});
       continuity_pass();
       B::for_each(n_, DriftPass<D>{v, grid_, Real(dt), continuity()});
-      evaluate();
+      evaluate(dt);
     }
     t_ += dt;
     ++steps_;
@@ -247,6 +249,8 @@ class Simulation final : public Engine {
   }
 
   void force_pass() {
+    if (has_walls_ && opt_.wall_pressure == WallPressure::Extrapolated)
+      B::for_each(n_, WallPressurePass<D>{view_nb(), kern_, s_.view(), mats_});
     if (has_walls_) B::for_each(n_, WallVelocityPass<D>{view_nb(), kern_, s_.view(), mats_, opt_.wall_noslip});
     FluidForceOptions fo;
     fo.xsph = Real(opt_.xsph);
@@ -257,8 +261,15 @@ class Simulation final : public Engine {
   }
 
   // Neighbours, density (or EOS after continuity), forces at the new positions.
-  void evaluate() {
+  void evaluate(double dt) {
     if (lists_expired()) build_neighbours();
+    if (opt_.shifting > 0) {
+      shift_.resize(n_);
+      B::for_each(n_, ShiftingPass<D>{view_nb(), kern_, s_.view(), mats_, Real(opt_.shifting),
+                                      Real(smoothing_length()), Real(opt_.spacing), Real(dt), shift_.data()});
+      B::for_each(n_, ApplyShift<D>{s_.x.data(), shift_.data(), grid_});
+      if (lists_expired()) build_neighbours();
+    }
     if (continuity()) B::for_each(n_, EquationOfStatePass<D>{s_.view(), mats_});
     else density_pass();
     force_pass();
@@ -303,6 +314,7 @@ class Simulation final : public Engine {
   DeviceArray<int, B> nb_index_, nb_count_, nb_fluid_count_;
   int capacity_ = 32;
   DeviceArray<Vec<D>, B> x_build_;  // positions at the last list build
+  DeviceArray<Vec<D>, B> shift_;    // particle shifting displacement (scratch)
   double list_radius_ = 0;
   long list_builds_ = 0;
   int n_ = 0;

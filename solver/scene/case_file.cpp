@@ -242,6 +242,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
         m.props.eos = r.choice("equation_of_state", {"linear", "tait"}, "linear") == "tait" ? EquationOfState::Tait
                                                                                              : EquationOfState::Linear;
         m.props.tait_gamma = Real(r.positive("tait_gamma", 7.0));
+        m.props.background_pressure = Real(r.non_negative("background_pressure", 0.0));
         m.body_force = r.vec<double>("body_force", D, std::array<double, 3>{0, 0, 0});
       }
       r.finish();
@@ -262,6 +263,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       if (m.props.kind == MaterialKind::Wall) {
         if (m.props.rest_density == Real(0)) m.props.rest_density = fluid->props.rest_density;
         m.props.sound_speed = c_max;
+        m.props.background_pressure = fluid->props.background_pressure;
       }
   }
   {
@@ -274,9 +276,13 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     const std::string ns = r.choice("wall_noslip", {"curved", "mirror", "prescribed"}, "curved");
     o.wall_noslip = ns == "prescribed" ? WallNoSlip::Prescribed : ns == "mirror" ? WallNoSlip::Mirror : WallNoSlip::Curved;
     o.laplacian_normalised = r.boolean("laplacian_normalised", true);
+    o.wall_pressure = r.choice("wall_pressure", {"extrapolated", "summation"}, "extrapolated") == "summation"
+                          ? WallPressure::Summation : WallPressure::Extrapolated;
     o.xsph = r.non_negative("xsph", 0.0);
     o.artificial_viscosity = r.non_negative("artificial_viscosity", 0.0);
     o.density_diffusion = r.non_negative("density_diffusion", 0.0);
+    o.shifting = r.non_negative("shifting", 0.0);
+    if (o.shifting > 2) r.fail("shifting", "expected a shifting coefficient in [0, 2]");
     if (o.xsph > 1) r.fail("xsph", "expected an XSPH epsilon in [0, 1]");
     o.dt_factor = r.positive("dt_factor", 1.0);
     if (o.dt_factor > 4) r.fail("dt_factor", "expected a factor in (0, 4]");

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "boundary/wall_pressure.hpp"
 #include "boundary/wall_velocity.hpp"
 #include "fluid/material.hpp"
 #include "kernels/kernel.hpp"
@@ -30,7 +31,9 @@ struct SolverOptions {
   double xsph = 0;            // XSPH epsilon
   double artificial_viscosity = 0;  // Monaghan alpha
   double density_diffusion = 0;     // delta-SPH delta (continuity only)
+  double shifting = 0;              // particle shifting coefficient A (0 = off)
   WallNoSlip wall_noslip = WallNoSlip::Curved;
+  WallPressure wall_pressure = WallPressure::Extrapolated;
   bool laplacian_normalised = true;  // viscous Laplacian divided by its lattice sum (momentum.hpp)
   double dt_factor = 1;       // scales every time-step limit
   double neighbour_skin = 0.1;  // Verlet-list skin as a fraction of the support radius
