@@ -18,7 +18,16 @@ std::vector<AccuracyRecord> accuracy_sweep(const std::string& backend, bool sphe
     for (double ratio : {2.0, 3.0, 4.0}) {
       toml::table tbl = toml::parse(embedded_case_text("poiseuille_couette_2d"), std::string_view("poiseuille_couette_2d"));
       set_case_value(tbl, "discretisation.kernel", toml::value<std::string>(kernel));
-      set_case_value(tbl, "discretisation.spacing", toml::value<double>(1e-4 / ratio));
+      const double dx = 1e-4 / ratio, L = 1e-3;
+      set_case_value(tbl, "discretisation.spacing", toml::value<double>(dx));
+      // Walls of whole spacings (at least 1.5 support radii), so that the lattice puts the wall
+      // surface halfway between the last fluid and the first wall particle at every resolution.
+      const double wall = std::ceil(1.5e-4 / dx - 1e-9) * dx;
+      tbl["domain"]["lower"].as_array()->at(0).as_floating_point()->get() = -wall;
+      tbl["domain"]["upper"].as_array()->at(0).as_floating_point()->get() = L + wall;
+      toml::array& geo = *tbl["geometry"].as_array();
+      geo[0].as_table()->at("lower").as_array()->at(0).as_floating_point()->get() = -wall;
+      geo[1].as_table()->at("upper").as_array()->at(0).as_floating_point()->get() = L + wall;
       Case c = parse_case(tbl, "cases/poiseuille_couette_2d.toml");
       build_particles(c);
       const ChannelErrors e = channel_flow_errors(c, backend, times);

@@ -20,9 +20,8 @@ namespace psph {
 enum class WallPressure { Summation = 0, Extrapolated = 1 };
 
 // rho from p for material `mat` (inverse of fluid/eos.hpp).
-PSPH_HD inline Real density_from_pressure(const Material& mat, Real p_total, Real rho0) {
+PSPH_HD inline Real density_from_pressure(const Material& mat, Real p, Real rho0) {
   const Real c2 = mat.sound_speed * mat.sound_speed;
-  const Real p = p_total - mat.background_pressure;
   if (mat.eos == EquationOfState::Tait) {
     const Real base = Real(1) + p * mat.tait_gamma / (rho0 * c2);
     return rho0 * pow(base > Real(1e-6) ? base : Real(1e-6), Real(1) / mat.tait_gamma);

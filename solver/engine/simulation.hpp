@@ -62,7 +62,7 @@ struct SetWallRestDensity {
   PSPH_HD void operator()(int i) const {
     if (!mats.is_fluid(s.material[i])) {
       s.rho0[i] = s.rho[i];
-      s.p[i] = mats[s.material[i]].background_pressure;
+      s.p[i] = Real(0);
     }
   }
 };
@@ -150,14 +150,14 @@ class Simulation final : public Engine {
       B::for_each(n_, KickPass<D>{v, mats_, Real(0.5 * dt)});
       continuity_pass();
       B::for_each(n_, DriftPass<D>{v, grid_, Real(dt), continuity()});
-      evaluate(dt);
+      evaluate();
       B::for_each(n_, KickPass<D>{s_.view(), mats_, Real(0.5 * dt)});
     } else {
       // Leapfrog (eq. 48): v(t+dt/2) = v(t-dt/2) + dt a(t), x(t+dt) = x(t) + dt v_hat(t+dt/2).
       B::for_each(n_, KickPass<D>{v, mats_, Real(dt)});
       continuity_pass();
       B::for_each(n_, DriftPass<D>{v, grid_, Real(dt), continuity()});
-      evaluate(dt);
+      evaluate();
     }
     t_ += dt;
     ++steps_;
@@ -261,12 +261,12 @@ class Simulation final : public Engine {
   }
 
   // Neighbours, density (or EOS after continuity), forces at the new positions.
-  void evaluate(double dt) {
+  void evaluate() {
     if (lists_expired()) build_neighbours();
     if (opt_.shifting > 0) {
       shift_.resize(n_);
       B::for_each(n_, ShiftingPass<D>{view_nb(), kern_, s_.view(), mats_, Real(opt_.shifting),
-                                      Real(smoothing_length()), Real(opt_.spacing), Real(dt), shift_.data()});
+                                      Real(smoothing_length()), Real(opt_.spacing), shift_.data()});
       B::for_each(n_, ApplyShift<D>{s_.x.data(), shift_.data(), grid_});
       if (lists_expired()) build_neighbours();
     }

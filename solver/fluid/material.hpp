@@ -16,7 +16,6 @@ struct Material {
   Real sound_speed = 1;      // m/s
   Real viscosity = 0;        // dynamic viscosity (Pa s); walls take the fluid's (see momentum.hpp)
   Real tait_gamma = 7;
-  Real background_pressure = 0;  // Pa (fluid/eos.hpp)
 };
 
 constexpr int kMaxMaterials = 8;

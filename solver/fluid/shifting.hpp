@@ -1,10 +1,9 @@
 #pragma once
-// Particle shifting for weakly compressible SPH (Skillen, Lind, Stansby & Rogers 2013, Comput.
-// Methods Appl. Mech. Eng. 265:163, eqs. 18-20): each fluid particle moves down the gradient of the
-// particle concentration by
-//   dr_i = -A h_s |v_i| dt sum_j V_j (1 + 0.2 (W_ij / W(dx))^4) grad_i W_ij,
-// which keeps the distribution uniform in flows that would otherwise disorder it (flow around
-// obstacles). The |v| dt factor ties the shift to the particle's own motion in the step. Without it, the sphere-array flow loses its lattice as particles pass the sphere, the
+// Particle shifting (Lind, Xu, Stansby & Rogers 2012, J. Comput. Phys. 231:1499, eqs. 8-11): each
+// step, each fluid particle moves down the gradient of the particle concentration by
+//   dr_i = -A h_s^2 sum_j V_j (1 + 0.2 (W_ij / W(dx))^4) grad_i W_ij,
+// A dimensionless (per step), which keeps the distribution uniform in flows that would otherwise
+// disorder it (flow around obstacles). Without it, the sphere-array flow loses its lattice as particles pass the sphere, the
 // summation density scatters by 1-2 %, and the pressure noise (c^2 drho) grows to the size of the
 // driving pressure (measured). Particles with a truncated support (free surface: Shepard sum
 // below 0.95) are not shifted.
@@ -21,8 +20,8 @@ struct ShiftingPass {
   Kernel<D> kern;
   ParticleView<D> s;
   MaterialTable<D> mats;
-  Real coefficient;  // A (Skillen et al.: 1-6)
-  Real smoothing_length, spacing, dt;
+  Real coefficient;  // A
+  Real smoothing_length, spacing;
   Vec<D>* shift;     // output
   PSPH_HD void operator()(int i) const {
     shift[i] = Vec<D>::zero();
@@ -38,7 +37,7 @@ struct ShiftingPass {
       shepard += V_j * w;
     });
     if (shepard < Real(0.95)) return;
-    Vec<D> dr = grad * (-coefficient * smoothing_length * norm(s.v[i]) * dt);
+    Vec<D> dr = grad * (-coefficient * smoothing_length * smoothing_length);
     const Real len = norm(dr), cap = Real(0.02) * spacing;  // never more than 2 % of a spacing per step
     if (len > cap) dr *= cap / len;
     shift[i] = dr;

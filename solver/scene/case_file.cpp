@@ -242,7 +242,6 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
         m.props.eos = r.choice("equation_of_state", {"linear", "tait"}, "linear") == "tait" ? EquationOfState::Tait
                                                                                              : EquationOfState::Linear;
         m.props.tait_gamma = Real(r.positive("tait_gamma", 7.0));
-        m.props.background_pressure = Real(r.non_negative("background_pressure", 0.0));
         m.body_force = r.vec<double>("body_force", D, std::array<double, 3>{0, 0, 0});
       }
       r.finish();
@@ -263,7 +262,6 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       if (m.props.kind == MaterialKind::Wall) {
         if (m.props.rest_density == Real(0)) m.props.rest_density = fluid->props.rest_density;
         m.props.sound_speed = c_max;
-        m.props.background_pressure = fluid->props.background_pressure;
       }
   }
   {

@@ -54,7 +54,7 @@ Permeability measure_permeability(const Case& c, const std::string& backend) {
     t += interval;
     engine->run_until(t);
     q = darcy_velocity();
-    if ((t > 0.1 && std::fabs(q - q_prev) < 1e-3 * std::fabs(q)) || t >= t_max) break;
+    if ((t > 0.1 && std::fabs(q - q_prev) < 5e-3 * std::fabs(q)) || t >= t_max) break;
     q_prev = q;
   }
   Permeability p;
