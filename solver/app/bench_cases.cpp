@@ -48,37 +48,14 @@ Scene embedded_scene(const std::string& name) {
 
 }  // namespace
 
-// A periodic box of water with a shear wave.
+// A periodic 1 mm box of water with a shear wave, so every pair contributes viscous work.
 Scene fluid_box(const BenchSpec& spec) {
-  const int D = spec.dimension;
-  const int per_axis = static_cast<int>(std::lround(std::pow(double(spec.target_particles), 1.0 / D)));
-  const double dx = 1e-3 / per_axis;  // unit box of 1 mm
-  Scene sc;
-  sc.dimension = D;
-  for (int k = 0; k < D; ++k) sc.lower[k] = 0, sc.upper[k] = per_axis * dx, sc.periodic[k] = true;
-  SceneMaterial water;
-  water.name = "water";
-  water.props.kind = MaterialKind::Fluid;
-  water.props.rest_density = 1000;
-  water.props.viscosity = 1e-3;
-  water.props.sound_speed = 1.0;
-  sc.materials.push_back(water);
-  sc.options.spacing = dx;
-  sc.options.support_radius = spec.support_per_spacing * dx;
-  const double mass = 1000.0 / lattice_kernel_sum(D, sc.options.kernel, sc.options.support_radius, dx);
-  long n = 1;
-  for (int k = 0; k < D; ++k) n *= per_axis;
-  sc.x.resize(n * D), sc.v.resize(n * D), sc.mass.assign(n, mass), sc.material.assign(n, 0);
-  for (long i = 0; i < n; ++i) {
-    long r = i;
-    for (int k = 0; k < D; ++k) {
-      sc.x[i * D + k] = (r % per_axis + 0.5) * dx;
-      r /= per_axis;
-    }
-    // A shear wave: v_0 = 1e-2 sin(2 pi y / L), so every pair contributes viscous work.
-    sc.v[i * D] = 1e-2 * std::sin(2 * M_PI * sc.x[i * D + 1] / 1e-3);
-  }
-  return sc;
+  ShearBox b;
+  b.dimension = spec.dimension;
+  b.per_axis = static_cast<int>(std::lround(std::pow(double(spec.target_particles), 1.0 / spec.dimension)));
+  b.length = 1e-3;
+  b.support_per_spacing = spec.support_per_spacing;
+  return shear_box_scene(b);
 }
 
 BenchResult run_bench(const BenchSpec& spec, const std::string& backend, std::ostream* log) {

@@ -16,7 +16,7 @@ std::vector<StabilityRecord> stability_sweep(const std::string& backend, bool qu
   // The dam break through the collapse of the column (the front crosses half the tank by 1 s); the
   // channel to near steady state.
   const std::vector<Target> targets = {{"poiseuille_2d", 0.5}, {"dam_break_3d", quick ? 0.3 : 1.0}};
-  const std::vector<double> factors = quick ? std::vector<double>{1, 2, 4} : std::vector<double>{1, 1.5, 2, 2.5, 3, 4};
+  const std::vector<double> factors = quick ? std::vector<double>{1, 2, 4} : std::vector<double>{1, 1.5, 2, 2.5, 3, 3.5, 4};
   const std::vector<double> jitters = quick ? std::vector<double>{0, 0.2} : std::vector<double>{0, 0.1, 0.2};
   std::vector<StabilityRecord> out;
   for (const Target& tg : targets)
@@ -33,14 +33,11 @@ std::vector<StabilityRecord> stability_sweep(const std::string& backend, bool qu
         auto e = make_engine(c.scene, backend);
         try {
           e->run_until(tg.end);
-          const StepStats st = e->stats();
-          r.density_deviation_max = st.density_deviation_max;
-          // A weakly compressible run that "survives" with > 10 % density error is not a result.
-          r.stable = st.density_deviation_max < 0.1;
-          if (!r.stable) r.diagnostic = "density deviation above 10 %";
+          r.stable = true;  // the engine stops a run that is non-finite, leaves the domain or compresses > 10 %
         } catch (const InstabilityError& err) {
           r.diagnostic = err.what();
         }
+        r.density_deviation_max = e->stats().density_deviation_max;
         r.end_time = e->time(), r.steps = e->steps();
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         out.push_back(r);

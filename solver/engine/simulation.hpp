@@ -245,7 +245,7 @@ class Simulation final : public Engine {
   void continuity_pass() {
     if (!continuity()) return;
     B::for_each(n_, ContinuityPass<D>{view_nb(), kern_, s_.view(), mats_, Real(opt_.density_diffusion),
-                                      Real(smoothing_length())});
+                                      Real(smoothing_length()), opt_.wall_pressure == WallPressure::Summation});
   }
 
   void force_pass() {
@@ -295,13 +295,15 @@ class Simulation final : public Engine {
   }
 
   void check_health() {
-    const int bad = B::template max_of<int>(n_, BadParticle<D>{s_.view(), grid_});
-    if (bad == 2)
-      throw InstabilityError("non-finite particle state (NaN or Inf) at t = " + std::to_string(t_) + " s, step " +
-                             std::to_string(steps_));
+    const int bad =
+        B::template max_of<int>(n_, BadParticle<D>{s_.view(), grid_, mats_, Real(opt_.max_density_deviation)});
+    const std::string when = " at t = " + std::to_string(t_) + " s, step " + std::to_string(steps_);
+    if (bad == 3) throw InstabilityError("non-finite particle state (NaN or Inf)" + when);
+    if (bad == 2) throw InstabilityError("a particle left the domain through a closed side" + when);
     if (bad == 1)
-      throw InstabilityError("a particle left the domain through a closed side at t = " + std::to_string(t_) +
-                             " s, step " + std::to_string(steps_));
+      throw InstabilityError("a fluid density is more than " + std::to_string(100 * opt_.max_density_deviation) +
+                             " % off its reference" + when +
+                             ": the flow is no longer weakly compressible (raise the sound speed or lower dt_factor)");
   }
 
   SolverOptions opt_;

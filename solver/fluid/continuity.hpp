@@ -19,12 +19,13 @@ struct ContinuityPass {
   MaterialTable<D> mats;
   Real density_diffusion;  // delta (0 = off)
   Real smoothing_length;
+  bool walls;              // integrate wall densities too (false when walls take the fluid's pressure)
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
     const bool fluid_i = mats.is_fluid(mi);
     const Vec<D> v_i = s.v[i];
     const Real rho_i = s.rho[i];
-    if (!fluid_i && !s.near_fluid[i]) {
+    if (!fluid_i && (!walls || !s.near_fluid[i])) {
       s.drho[i] = Real(0);
       return;
     }

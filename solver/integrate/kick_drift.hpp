@@ -34,16 +34,20 @@ struct DriftPass {
   }
 };
 
-// 1 where a particle's state is not finite or it left the domain through a closed side.
+// 3: state not finite; 2: left the domain through a closed side; 1: a fluid density off its
+// reference by more than `max_density_deviation` (no longer weakly compressible); 0: healthy.
 template <int D>
 struct BadParticle {
   ParticleView<D> s;
   CellGrid<D> grid;
+  MaterialTable<D> mats;
+  Real max_density_deviation;
   PSPH_HD int operator()(int i) const {
     Real sum = s.rho[i];
     for (int k = 0; k < D; ++k) sum += s.x[i][k] + s.v[i][k] + s.a[i][k];
-    if (!is_finite(sum)) return 2;
-    return grid.inside(s.x[i]) ? 0 : 1;
+    if (!is_finite(sum)) return 3;
+    if (!grid.inside(s.x[i])) return 2;
+    return mats.is_fluid(s.material[i]) && fabs(s.rho[i] / s.rho0[i] - Real(1)) > max_density_deviation ? 1 : 0;
   }
 };
 

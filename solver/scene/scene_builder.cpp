@@ -44,6 +44,36 @@ double lattice_kernel_sum(int dimension, KernelType kernel, double support, doub
   }
 }
 
+Scene shear_box_scene(const ShearBox& b) {
+  const int D = b.dimension;
+  const double dx = b.length / b.per_axis;
+  Scene sc;
+  sc.dimension = D;
+  for (int k = 0; k < D; ++k) sc.lower[k] = 0, sc.upper[k] = b.length, sc.periodic[k] = true;
+  SceneMaterial fluid;
+  fluid.name = "fluid";
+  fluid.props.kind = MaterialKind::Fluid;
+  fluid.props.rest_density = Real(b.density);
+  fluid.props.viscosity = Real(b.viscosity);
+  fluid.props.sound_speed = Real(b.sound_speed);
+  sc.materials.push_back(fluid);
+  sc.options.spacing = dx;
+  sc.options.support_radius = b.support_per_spacing * dx;
+  const double mass = b.density / lattice_kernel_sum(D, sc.options.kernel, sc.options.support_radius, dx);
+  long n = 1;
+  for (int k = 0; k < D; ++k) n *= b.per_axis;
+  sc.x.resize(n * D), sc.v.assign(n * D, 0.0), sc.mass.assign(n, mass), sc.material.assign(n, 0);
+  for (long i = 0; i < n; ++i) {
+    long r = i;
+    for (int k = 0; k < D; ++k) {
+      sc.x[i * D + k] = (r % b.per_axis + 0.5) * dx;
+      r /= b.per_axis;
+    }
+    sc.v[i * D] = b.amplitude * std::sin(2 * M_PI * sc.x[i * D + (D > 1 ? 1 : 0)] / b.length);
+  }
+  return sc;
+}
+
 void build_particles(Case& c) {
   Scene& sc = c.scene;
   const int D = sc.dimension;

@@ -8,6 +8,16 @@ namespace psph {
 // Fills case.scene's particles. Throws CaseError when the geometry yields no fluid particle.
 void build_particles(Case& c);
 
+// A periodic cube of edge `length` filled with one fluid on a lattice of `per_axis` sites per axis,
+// support = support_per_spacing spacings (cubic spline), carrying a shear wave
+// v_x = amplitude sin(2 pi y / length) (along x in 1D). Benchmarks and engine tests use it.
+struct ShearBox {
+  int dimension = 3, per_axis = 10;
+  double length = 1, support_per_spacing = 2;
+  double density = 1000, viscosity = 1e-3, sound_speed = 1, amplitude = 1e-2;
+};
+Scene shear_box_scene(const ShearBox& b);
+
 // sum_j W(x_i - x_j) over an infinite lattice of the given spacing (self included): the number
 // density of an interior particle. Masses are rho0 / this, so an interior particle starts at rho0.
 double lattice_kernel_sum(int dimension, KernelType kernel, double support, double spacing);
