@@ -286,6 +286,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     if (o.dt_factor > 4) r.fail("dt_factor", "expected a factor in (0, 4]");
     o.fixed_dt = r.non_negative("dt", 0.0);
     o.neighbour_skin = r.non_negative("neighbour_skin", 0.1);
+    o.max_density_deviation = r.non_negative("max_density_deviation", 0.0);
     if (o.neighbour_skin > 1) r.fail("neighbour_skin", "expected a fraction of the support radius in [0, 1]");
     r.finish();
   }

@@ -39,7 +39,7 @@ struct SolverOptions {
   double neighbour_skin = 0.1;  // Verlet-list skin as a fraction of the support radius
   double fixed_dt = 0;        // > 0: constant step instead of the adaptive one
   double min_dt_ratio = 1e-4; // a step below this fraction of the first step is a collapse
-  double max_density_deviation = 0.1;  // |rho/rho0 - 1| of a fluid particle that stops a run
+  double max_density_deviation = 0;  // > 0: |rho/rho0 - 1| of a fluid particle that stops a run
 };
 
 struct Scene {
