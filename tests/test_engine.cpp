@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "engine/engine.hpp"
+#include "kernels/kernel.hpp"
 #include "scene/case_file.hpp"
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
@@ -225,4 +226,67 @@ TEST(Engine, JitterMovesFluidOnly) {
   EXPECT_GT(moved_fluid, 0.05 * 5e-5);
   EXPECT_LE(moved_fluid, 0.2 * 5e-5 * (1 + 1e-9));
   EXPECT_EQ(moved_wall, 0.0);
+}
+
+TEST(Engine, WallRestDensityIsTheFullInitialSum) {
+  // Every wall particle's rest density (summation mode) is its full initial kernel sum, also for
+  // walls that start far from the fluid and get no neighbour list afterwards. Brute force check.
+  const std::string text = R"(
+[case]
+name = "tank"
+dimension = 2
+[domain]
+lower = [-0.2, -0.2]
+upper = [1.2, 1.4]
+[discretisation]
+spacing = 0.05
+smoothing_length = 0.065
+kernel = "wendland_c2"
+[materials.water]
+kind = "fluid"
+density = 1.0
+viscosity = 0.0
+sound_speed = 20.0
+body_force = [0.0, -1.0]
+[materials.wall]
+kind = "wall"
+[solver]
+wall_pressure = "summation"
+[time]
+end = 1.0
+[[geometry]]
+shape = "box"
+lower = [-0.2, -0.2]
+upper = [1.2, 1.4]
+material = "wall"
+[[geometry]]
+shape = "box"
+lower = [0.0, 0.0]
+upper = [1.0, 1.4]
+material = "empty"
+[[geometry]]
+shape = "box"
+lower = [0.0, 0.0]
+upper = [1.0, 0.3]
+material = "water"
+)";
+  Case c = load_case_text(text, "tank.toml");
+  build_particles(c);
+  const Scene& sc = c.scene;
+  const Kernel<2> k = Kernel<2>::make(KernelType::WendlandC2, Real(0.13));
+  auto e = make_cpu_engine(sc);
+  const auto rho0 = e->field("rest_density"), id = e->field("id");
+  int walls = 0;
+  for (int i = 0; i < e->particles(); ++i) {
+    const int p = static_cast<int>(id[i]);
+    if (sc.materials[sc.material[p]].props.kind != MaterialKind::Wall) continue;
+    double sum = 0;
+    for (int q = 0; q < sc.count(); ++q) {
+      const double dx = sc.x[2 * p] - sc.x[2 * q], dy = sc.x[2 * p + 1] - sc.x[2 * q + 1];
+      sum += sc.mass[q] * k.W(Real(std::sqrt(dx * dx + dy * dy)));
+    }
+    ASSERT_NEAR(rho0[i], sum, 1e-12 * sum) << "wall particle " << p;
+    ++walls;
+  }
+  EXPECT_GT(walls, 300);
 }

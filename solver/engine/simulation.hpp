@@ -94,12 +94,14 @@ class Simulation final : public Engine {
     }
     upload(sc);
     bucket_start_.resize(2 * grid_.total), bucket_end_.resize(2 * grid_.total), cell_near_.resize(grid_.total);
-    build_neighbours();
     if (continuity()) {
+      build_neighbours();
       B::for_each(n_, EquationOfStatePass<D>{s_.view(), mats_});
     } else {
+      build_neighbours(true);
       density_pass(true);  // every wall's rest density is its initial summed density
       B::for_each(n_, SetWallRestDensity<D>{s_.view(), mats_});
+      build_neighbours();
     }
     force_pass();
   }
@@ -217,11 +219,15 @@ class Simulation final : public Engine {
   }
 
   // Cell keys, sort by cell (fluid first in each cell), reorder every registered field, ranges.
-  void build_neighbours() {
+  // `every_particle`: full lists for every particle (the initial density, which must see every
+  // wall's whole neighbourhood to set its rest density); otherwise walls far from the fluid get none.
+  void build_neighbours(bool every_particle = false) {
     B::for_each(n_, CellKeyPass<D>{grid_, s_.x.data(), s_.material.data(), mats_, keys_.data()});
     B::sort_by_cell(keys_.data(), n_, 2 * grid_.total, perm_.data(), bucket_start_.data(), bucket_end_.data());
     s_.permute(perm_.data());
-    if (has_walls_) {
+    if (every_particle) {
+      s_.near_fluid.upload(std::vector<std::uint8_t>(n_, 1));
+    } else if (has_walls_) {
       B::for_each(grid_.total, CellNearFluid<D>{view_cells(), cell_near_.data()});
       B::for_each(n_, NearFluid<D>{grid_, s_.x.data(), cell_near_.data(), s_.near_fluid.data()});
     }
@@ -240,7 +246,7 @@ class Simulation final : public Engine {
 
   void density_pass(bool all_particles = false) {
     const bool normalised = opt_.density == DensityMethod::NormalisedSummation;
-    if (normalised) B::for_each(n_, NumberDensityPass<D>{view_nb(), kern_, s_.view()});
+    if (normalised) B::for_each(n_, NumberDensityPass<D>{view_nb(), kern_, s_.view(), all_particles});
     B::for_each(n_, DensitySummationPass<D>{view_nb(), kern_, s_.view(), mats_, normalised, all_particles});
   }
 

@@ -15,7 +15,9 @@ struct NumberDensityPass {
   NeighbourList<D> nb;
   Kernel<D> kern;
   ParticleView<D> s;
+  bool all_particles;  // false: walls far from any fluid keep their (initial, full) number density
   PSPH_HD void operator()(int i) const {
+    if (!all_particles && !s.near_fluid[i]) return;
     Real n = kern.W(Real(0));
     nb.for_each(i, [&](int, const Vec<D>&, Real r) PSPH_PAIR { n += kern.W(r); });
     s.number_density[i] = n;

@@ -45,6 +45,7 @@ struct FluidForcePass {
       return;
     }
     nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
+      if (!(r > Real(0))) return;  // coincident particles exert no pair force (avoids 0/0)
       const int mj = s.material[j];
       const Real rho_j = s.rho[j];
       const Real m_j = s.m[j];
