@@ -28,7 +28,8 @@ struct FluidForcePass {
     const bool fluid_i = mats.is_fluid(mi);
     const Vec<D> v_i = s.v[i];
     const Real rho_i = s.rho[i];
-    const Real p_rho2_i = s.p[i] / (rho_i * rho_i);
+    const Real inv_rho_i = Real(1) / rho_i;
+    const Real p_rho2_i = s.p[i] * inv_rho_i * inv_rho_i;
     const Real mu_i = mats[mi].viscosity;
     const Real c_i = mats[mi].sound_speed;
     const Real hs = opt.smoothing_length;
@@ -49,11 +50,13 @@ struct FluidForcePass {
       const int mj = s.material[j];
       const Real rho_j = s.rho[j];
       const Real m_j = s.m[j];
+      const Real inv_rho_j = Real(1) / rho_j;
+      const Real V_j = m_j * inv_rho_j;
       const Real dw_r = kern.dWdr(r) / r;  // F_ij = (1/r) dW/dr, grad_i W_ij = r_ij F_ij
       const Vec<D> vij = v_i - s.v[j];
       const bool fluid_j = mats.is_fluid(mj);
       // Pressure, symmetric form (Pazdniakou eq. 54b in eq. 57).
-      Real pterm = m_j * (p_rho2_i + s.p[j] / (rho_j * rho_j));
+      Real pterm = m_j * (p_rho2_i + s.p[j] * inv_rho_j * inv_rho_j);
       // Artificial viscosity for approaching pairs (Monaghan 1992; Deptulski eq. 2.64 with the
       // sign that makes it repulsive).
       const Real vr = dot(vij, rij);
@@ -69,9 +72,8 @@ struct FluidForcePass {
       const Vec<D> vij_visc = fluid_j ? vij : v_i - s.v_noslip[j];
       const Real mu_j = fluid_j ? mats[mj].viscosity : mu_i;
       const Real mu_sum = mu_i + mu_j;
-      const Real mu_pair = mu_sum > Real(0) ? Real(4) * mu_i * mu_j / mu_sum : Real(0);
-      visc += vij_visc * (mu_pair * m_j / (rho_i * rho_j) * dw_r);
-      lambda -= m_j / rho_j * r * r * dw_r;
+      if (mu_sum > Real(0)) visc += vij_visc * (Real(4) * mu_i * mu_j / mu_sum * V_j * inv_rho_i * dw_r);
+      lambda -= V_j * r * r * dw_r;
       // XSPH over the same material, with the kernel factor restored (eq. 76, digest §7 item 2).
       if (opt.xsph > Real(0) && mj == mi) xs -= vij * (Real(2) * m_j / (rho_i + rho_j) * kern.W(r));
     });
