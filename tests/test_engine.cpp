@@ -35,6 +35,49 @@ Scene shear_box(int n, int dimension = 2) {
   return shear_box_scene(b);
 }
 
+// A closed 2D tank (walls 4 spacings thick) with water up to `water_top`, and a [solver] block.
+std::string tank_case(const std::string& solver, double water_top) {
+  return R"(
+[case]
+name = "tank"
+dimension = 2
+[domain]
+lower = [-0.2, -0.2]
+upper = [1.2, 1.4]
+[discretisation]
+spacing = 0.05
+smoothing_length = 0.065
+kernel = "wendland_c2"
+[materials.water]
+kind = "fluid"
+density = 1.0
+viscosity = 0.0
+sound_speed = 20.0
+body_force = [0.0, -1.0]
+[materials.wall]
+kind = "wall"
+[solver]
+)" + solver + R"(
+[time]
+end = 3.0
+[[geometry]]
+shape = "box"
+lower = [-0.2, -0.2]
+upper = [1.2, 1.4]
+material = "wall"
+[[geometry]]
+shape = "box"
+lower = [0.0, 0.0]
+upper = [1.0, 1.4]
+material = "empty"
+[[geometry]]
+shape = "box"
+lower = [0.0, 0.0]
+upper = [1.0, )" + std::to_string(water_top) + R"(]
+material = "water"
+)";
+}
+
 }  // namespace
 
 TEST(Engine, IdenticalForAnyThreadCount) {
@@ -164,45 +207,9 @@ TEST(Engine, VerletSkinDoesNotChangeResults) {
 }
 
 TEST(Engine, HydrostaticTankStaysAtRest) {
-  // Water at rest in a closed 2D tank under gravity, density by continuity: it must settle, not
+  // Water at rest in a 2D tank under gravity (free surface), density by continuity: it must settle, not
   // gain energy (continuity evaluated with the drift velocity, fluid/continuity.hpp).
-  const std::string text = R"(
-[case]
-name = "tank"
-dimension = 2
-[domain]
-lower = [-0.2, -0.2]
-upper = [1.2, 1.4]
-[discretisation]
-spacing = 0.05
-smoothing_length = 0.065
-kernel = "wendland_c2"
-[materials.water]
-kind = "fluid"
-density = 1.0
-viscosity = 0.0
-sound_speed = 20.0
-body_force = [0.0, -1.0]
-[materials.wall]
-kind = "wall"
-[solver]
-density = "continuity"
-artificial_viscosity = 0.1
-density_diffusion = 0.1
-wall_noslip = "prescribed"
-[time]
-end = 3.0
-[[geometry]]
-shape = "box"
-lower = [-0.2, -0.2]
-upper = [1.2, 1.4]
-material = "wall"
-[[geometry]]
-shape = "box"
-lower = [0.0, 0.0]
-upper = [1.0, 1.2]
-material = "water"
-)";
+  const std::string text = tank_case("density = \"continuity\"\nartificial_viscosity = 0.1\ndensity_diffusion = 0.1\nwall_noslip = \"prescribed\"", 1.2);
   Case c = load_case_text(text, "tank.toml");
   build_particles(c);
   auto e = make_cpu_engine(c.scene);
@@ -231,45 +238,7 @@ TEST(Engine, JitterMovesFluidOnly) {
 TEST(Engine, WallRestDensityIsTheFullInitialSum) {
   // Every wall particle's rest density (summation mode) is its full initial kernel sum, also for
   // walls that start far from the fluid and get no neighbour list afterwards. Brute force check.
-  const std::string text = R"(
-[case]
-name = "tank"
-dimension = 2
-[domain]
-lower = [-0.2, -0.2]
-upper = [1.2, 1.4]
-[discretisation]
-spacing = 0.05
-smoothing_length = 0.065
-kernel = "wendland_c2"
-[materials.water]
-kind = "fluid"
-density = 1.0
-viscosity = 0.0
-sound_speed = 20.0
-body_force = [0.0, -1.0]
-[materials.wall]
-kind = "wall"
-[solver]
-wall_pressure = "summation"
-[time]
-end = 1.0
-[[geometry]]
-shape = "box"
-lower = [-0.2, -0.2]
-upper = [1.2, 1.4]
-material = "wall"
-[[geometry]]
-shape = "box"
-lower = [0.0, 0.0]
-upper = [1.0, 1.4]
-material = "empty"
-[[geometry]]
-shape = "box"
-lower = [0.0, 0.0]
-upper = [1.0, 0.3]
-material = "water"
-)";
+  const std::string text = tank_case("wall_pressure = \"summation\"", 0.3);
   Case c = load_case_text(text, "tank.toml");
   build_particles(c);
   const Scene& sc = c.scene;
