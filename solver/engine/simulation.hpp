@@ -12,7 +12,6 @@
 #include "engine/engine.hpp"
 #include "fluid/continuity.hpp"
 #include "fluid/density.hpp"
-#include "fluid/shifting.hpp"
 #include "fluid/momentum.hpp"
 #include "integrate/kick_drift.hpp"
 #include "integrate/timestep.hpp"
@@ -234,7 +233,6 @@ class Simulation final : public Engine {
     build_lists();
     x_build_.resize(n_);
     B::copy(x_build_.data(), s_.x.data(), sizeof(Vec<D>) * n_);
-    ++list_builds_;
   }
 
   // The lists hold every pair within R as long as no particle moved by half the skin.
@@ -272,13 +270,6 @@ class Simulation final : public Engine {
   // Neighbours, density (or EOS after continuity), forces at the new positions.
   void evaluate() {
     if (lists_expired()) build_neighbours();
-    if (opt_.shifting > 0) {
-      shift_.resize(n_);
-      B::for_each(n_, ShiftingPass<D>{view_nb(), kern_, s_.view(), mats_, Real(opt_.shifting),
-                                      Real(smoothing_length()), Real(opt_.spacing), shift_.data()});
-      B::for_each(n_, ApplyShift<D>{s_.x.data(), shift_.data(), grid_});
-      if (lists_expired()) build_neighbours();
-    }
     if (continuity()) B::for_each(n_, EquationOfStatePass<D>{s_.view(), mats_});
     else density_pass();
     force_pass();
@@ -325,9 +316,7 @@ class Simulation final : public Engine {
   DeviceArray<int, B> nb_index_, nb_count_, nb_fluid_count_;
   int capacity_ = 32;
   DeviceArray<Vec<D>, B> x_build_;  // positions at the last list build
-  DeviceArray<Vec<D>, B> shift_;    // particle shifting displacement (scratch)
   double list_radius_ = 0;
-  long list_builds_ = 0;
   int n_ = 0;
   double t_ = 0, dt_ = 0, dt_first_ = 0, c_max_ = 0, nu_max_ = 0;
   long steps_ = 0;

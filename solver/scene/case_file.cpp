@@ -279,8 +279,6 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     o.xsph = r.non_negative("xsph", 0.0);
     o.artificial_viscosity = r.non_negative("artificial_viscosity", 0.0);
     o.density_diffusion = r.non_negative("density_diffusion", 0.0);
-    o.shifting = r.non_negative("shifting", 0.0);
-    if (o.shifting > 2) r.fail("shifting", "expected a shifting coefficient in [0, 2]");
     if (o.xsph > 1) r.fail("xsph", "expected an XSPH epsilon in [0, 1]");
     o.dt_factor = r.positive("dt_factor", 1.0);
     if (o.dt_factor > 4) r.fail("dt_factor", "expected a factor in (0, 4]");

@@ -31,7 +31,6 @@ struct SolverOptions {
   double xsph = 0;            // XSPH epsilon
   double artificial_viscosity = 0;  // Monaghan alpha
   double density_diffusion = 0;     // delta-SPH delta (continuity only)
-  double shifting = 0;              // particle shifting coefficient A (0 = off)
   WallNoSlip wall_noslip = WallNoSlip::Curved;
   WallPressure wall_pressure = WallPressure::Extrapolated;
   bool laplacian_normalised = true;  // viscous Laplacian divided by its lattice sum (momentum.hpp)
