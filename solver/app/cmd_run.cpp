@@ -3,12 +3,14 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <filesystem>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
 
 #include "app/commands.hpp"
 #include "engine/engine.hpp"
+#include "io/checkpoint_file.hpp"
 #include "io/particle_output.hpp"
 #include "io/run_directory.hpp"
 #include "scene/case_file.hpp"
@@ -49,6 +51,23 @@ int drive(Case& c, const RunOptions& opt) {
     std::cerr << "poresph: " << e.what() << "\n";
     return 2;
   }
+  std::string restart_file;
+  if (!opt.restart.empty()) {
+    restart_file = std::filesystem::is_directory(opt.restart) ? latest_checkpoint(opt.restart) : opt.restart;
+    try {
+      if (restart_file.empty()) throw CheckpointError(opt.restart + ": no checkpoint (checkpoints/step_*.ckpt) in this directory");
+      engine->restore(read_checkpoint_file(restart_file));
+    } catch (const std::exception& e) {
+      const std::string msg = e.what();
+      std::cerr << "poresph: --restart " << (msg.rfind(restart_file, 0) == 0 ? "" : restart_file + ": ") << msg << "\n";
+      return 2;
+    }
+    if (engine->time() >= c.end_time) {
+      std::cerr << "poresph: --restart " << restart_file << ": the checkpoint is at t = " << engine->time()
+                << " s, not before the case's time.end = " << c.end_time << " s; raise time.end to continue\n";
+      return 2;
+    }
+  }
   const std::string dir = opt.out.empty() ? default_run_directory(c.name) : opt.out;
   std::unique_ptr<RunDirectory> rd;
   try {
@@ -62,6 +81,9 @@ int drive(Case& c, const RunOptions& opt) {
        << c.scene.dimension << "D, backend " << engine->backend() << " (" << engine->device() << "), "
        << precision_name() << " precision, end time " << c.end_time << " s";
   rd->log(head.str());
+  if (!restart_file.empty())
+    rd->log("restarted from " + restart_file + " at t = " + std::to_string(engine->time()) + " s, step " +
+            std::to_string(engine->steps()));
 
   const bool extracts = particle_output_available();
   if (!extracts) rd->log("note: built without ParaView's VTK, no particle extracts are written");
@@ -69,7 +91,17 @@ int drive(Case& c, const RunOptions& opt) {
   const double t_end = c.end_time;
   const double dt_mon = c.output.monitor_interval > 0 ? c.output.monitor_interval : t_end / 100;
   const double dt_ext = c.output.extract_interval > 0 ? c.output.extract_interval : t_end;
-  int n_mon = 1, n_ext = 1;
+  const double dt_ck = c.output.checkpoint_interval > 0 ? c.output.checkpoint_interval : t_end / 10;
+  // The next output times after the start (a restart starts part-way).
+  auto next_index = [&](double interval) { return long(std::floor(engine->time() / interval * (1 + 1e-12))) + 1; };
+  long n_mon = next_index(dt_mon), n_ext = next_index(dt_ext), n_ck = next_index(dt_ck);
+  auto checkpoint = [&] {
+    try {
+      rd->log("checkpoint " + rd->save_checkpoint(*engine, c.name, c.output.checkpoint_keep));
+    } catch (const std::exception& e) {
+      rd->log(std::string("warning: no checkpoint: ") + e.what());
+    }
+  };
   rd->monitor(*engine);
   if (extracts) writer.write(*engine);
 
@@ -93,6 +125,10 @@ int drive(Case& c, const RunOptions& opt) {
       if (t >= n_ext * dt_ext * (1 - 1e-12)) {
         if (extracts) writer.write(*engine);
         while (n_ext * dt_ext <= t * (1 + 1e-12)) ++n_ext;
+      }
+      if (t >= n_ck * dt_ck * (1 - 1e-12) && t < t_end) {
+        checkpoint();
+        while (n_ck * dt_ck <= t * (1 + 1e-12)) ++n_ck;
       }
       const auto now = clock::now();
       const double wall = std::chrono::duration<double>(now - t0).count();
@@ -123,7 +159,11 @@ int drive(Case& c, const RunOptions& opt) {
   }
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
-  if (status != "unstable" && status != "failed") rd->monitor(*engine);
+  // An unstable or failed state is not saved: the last good checkpoint stays.
+  if (status != "unstable" && status != "failed") {
+    rd->monitor(*engine);
+    checkpoint();
+  }
   if (extracts && status == "interrupted") writer.write(*engine);
   if (extracts) writer.write_collection();
 

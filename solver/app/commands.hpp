@@ -9,6 +9,7 @@ struct RunOptions {
   std::string backend = "cpu";
   std::string out;  // run directory; empty = runs/<case>-<timestamp>
   bool quiet = false;
+  std::string restart;  // checkpoint file, or a run directory (its newest checkpoint)
 };
 
 // Exit codes: 0 done, 2 bad input (nothing written), 3 unstable run (diagnostic in log.txt),

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   run->add_option("--backend", ro.backend, "cpu or cuda")->check(CLI::IsMember(backends));
   run->add_option("--out", ro.out, "run directory (default runs/<case>-<time>)");
   run->add_flag("--quiet", ro.quiet, "no progress lines on the terminal");
+  run->add_option("--restart", ro.restart, "continue from a checkpoint file, or a run directory's newest checkpoint");
 
   auto* check = app.add_subcommand("check", "validate a case file, run nothing");
   check->add_option("case", case_path, "case file (TOML)")->required();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "scene/scene.hpp"
+#include "state/checkpoint.hpp"
 
 namespace psph {
 
@@ -37,6 +38,10 @@ class Engine {
   virtual std::string device() const = 0;
   // Mean number of neighbours (r < support) per fluid particle.
   virtual double mean_neighbours() = 0;
+  // The whole state, for a restart. Rebuilds the neighbour lists first (see state/checkpoint.hpp).
+  virtual Checkpoint checkpoint() = 0;
+  // Continues from a checkpoint of the same scene; throws std::invalid_argument naming what differs.
+  virtual void restore(const Checkpoint& c) = 0;
   // Runs to t_end (exactly).
   void run_until(double t_end) {
     while (time() < t_end) step(t_end);

@@ -124,6 +124,41 @@ class Simulation final : public Engine {
     return names;
   }
 
+  Checkpoint checkpoint() override {
+    build_neighbours();  // the lists are then a function of the saved positions alone
+    Checkpoint c;
+    c.dimension = D, c.particles = n_, c.precision = precision_name();
+    c.time = t_, c.last_dt = dt_, c.first_dt = dt_first_, c.steps = steps_;
+    for (const auto& f : s_.fields().all()) {
+      c.fields.push_back(CheckpointField{f.info.name, f.element_bytes, {}});
+      f.to_host_bytes(c.fields.back().bytes);
+    }
+    return c;
+  }
+
+  void restore(const Checkpoint& c) override {
+    auto differs = [](const std::string& what, const std::string& ours, const std::string& theirs) {
+      throw std::invalid_argument("the checkpoint " + what + " (" + theirs + ") differs from the case's (" + ours + ")");
+    };
+    if (c.dimension != D) differs("dimension", std::to_string(D), std::to_string(c.dimension));
+    if (c.particles != n_) differs("particle count", std::to_string(n_), std::to_string(c.particles));
+    if (c.precision != precision_name()) differs("precision", precision_name(), c.precision);
+    for (const auto& f : s_.fields().all()) {
+      const CheckpointField* cf = nullptr;
+      for (const auto& g : c.fields)
+        if (g.name == f.info.name) cf = &g;
+      if (!cf) throw std::invalid_argument("the checkpoint has no field '" + f.info.name + "'");
+      if (cf->element_bytes != f.element_bytes || cf->bytes.size() != f.element_bytes * std::size_t(n_))
+        differs("size of field '" + f.info.name + "'", std::to_string(f.element_bytes * n_) + " bytes",
+                std::to_string(cf->bytes.size()) + " bytes");
+    }
+    for (const auto& f : s_.fields().all())
+      for (const auto& g : c.fields)
+        if (g.name == f.info.name) f.from_host_bytes(g.bytes);
+    t_ = c.time, dt_ = c.last_dt, dt_first_ = c.first_dt, steps_ = c.steps;
+    build_neighbours();
+  }
+
   StepStats stats() override {
     StepStats st;
     const ParticleView<D> v = s_.view();

@@ -4,6 +4,9 @@
 #include <ctime>
 #include <filesystem>
 #include <iostream>
+#include <set>
+
+#include "io/checkpoint_file.hpp"
 
 namespace psph {
 namespace fs = std::filesystem;
@@ -36,6 +39,21 @@ void RunDirectory::write_summary(const nlohmann::json& j) const {
   const std::string p = path_ + "/summary.json";
   std::ofstream(p + ".tmp") << j.dump(2) << "\n";
   fs::rename(p + ".tmp", p);
+}
+
+std::string RunDirectory::save_checkpoint(Engine& e, const std::string& case_name, int keep) {
+  char name[40];
+  std::snprintf(name, sizeof name, "/step_%010ld.ckpt", e.steps());
+  const std::string file = path_ + "/checkpoints" + name;
+  write_checkpoint_file(file, e.checkpoint(), case_name);
+  std::set<std::string> all;  // zero-padded names sort by step
+  for (const auto& f : fs::directory_iterator(path_ + "/checkpoints"))
+    if (f.path().extension() == ".ckpt") all.insert(f.path().string());
+  while (keep > 0 && int(all.size()) > keep) {
+    fs::remove(*all.begin());
+    all.erase(all.begin());
+  }
+  return file;
 }
 
 std::string default_run_directory(const std::string& case_name) {

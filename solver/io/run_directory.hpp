@@ -21,6 +21,8 @@ class RunDirectory {
   void log(const std::string& line);
   void monitor(Engine& e);
   void write_summary(const nlohmann::json& j) const;
+  // Writes checkpoints/step_<step>.ckpt and deletes the oldest beyond `keep`; returns its path.
+  std::string save_checkpoint(Engine& e, const std::string& case_name, int keep);
 
  private:
   std::string path_;

@@ -63,6 +63,11 @@ class Reader {
     if (auto v = n->value_exact<int64_t>()) return static_cast<long>(*v);
     fail(key, std::string("expected an integer, got ") + type_name(*n), n);
   }
+  long positive_integer(const std::string& key, long def) {
+    const long v = integer(key, def);
+    if (v < 1) fail(key, "expected an integer >= 1, got " + std::to_string(v), node(key));
+    return v;
+  }
   std::string string(const std::string& key, std::optional<std::string> def = std::nullopt) {
     const toml::node* n = node(key);
     if (!n) {
@@ -312,6 +317,8 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     Reader r(top.table("output", false), file, "output");
     c.output.monitor_interval = r.non_negative("monitor_interval", 0.0);
     c.output.extract_interval = r.non_negative("extract_interval", 0.0);
+    c.output.checkpoint_interval = r.non_negative("checkpoint_interval", 0.0);
+    c.output.checkpoint_keep = static_cast<int>(r.positive_integer("checkpoint_keep", c.output.checkpoint_keep));
     c.output.fields = r.strings("fields", c.output.fields);
     r.finish();
   }

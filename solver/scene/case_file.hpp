@@ -29,6 +29,8 @@ struct GeometryShape {
 struct OutputOptions {
   double monitor_interval = 0;  // s; 0 = every 1/100 of the run
   double extract_interval = 0;  // s; 0 = first and last state only
+  double checkpoint_interval = 0;  // s; 0 = a tenth of the run. A final one is always written.
+  int checkpoint_keep = 2;         // newest checkpoints kept in checkpoints/
   std::vector<std::string> fields{"velocity", "pressure", "density", "material"};
 };
 

@@ -24,6 +24,10 @@ struct FieldHandle {
   FieldInfo info;
   std::function<void(const int* perm)> permute;             // out[i] = in[perm[i]]
   std::function<void(std::vector<double>&)> to_host_double;  // components interleaved
+  // Raw copies for checkpoints: `element_bytes` per particle, exactly as stored.
+  std::size_t element_bytes = 0;
+  std::function<void(std::vector<unsigned char>&)> to_host_bytes;
+  std::function<void(const std::vector<unsigned char>&)> from_host_bytes;  // size = n * element_bytes
 };
 
 class FieldRegistry {

@@ -92,6 +92,15 @@ class ParticleState {
       const auto* raw = reinterpret_cast<const std::conditional_t<std::is_same_v<T, Vec<D>>, Real, T>*>(hv.data());
       for (std::size_t k = 0; k < out.size(); ++k) out[k] = static_cast<double>(raw[k]);
     };
+    h.element_bytes = sizeof(T);
+    h.to_host_bytes = [&arr](std::vector<unsigned char>& out) {
+      out.resize(arr.size() * sizeof(T));
+      if (!out.empty()) B::download(out.data(), arr.data(), out.size());
+    };
+    h.from_host_bytes = [&arr](const std::vector<unsigned char>& in) {
+      arr.resize(in.size() / sizeof(T));
+      if (!in.empty()) B::upload(arr.data(), in.data(), in.size());
+    };
     registry_.add(std::move(h));
   }
 

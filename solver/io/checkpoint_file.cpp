@@ -1,0 +1,91 @@
+#include "io/checkpoint_file.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+namespace psph {
+namespace fs = std::filesystem;
+namespace {
+constexpr const char* kMagic = "PORESPH-CHECKPOINT 1";
+}
+
+void write_checkpoint_file(const std::string& path, const Checkpoint& c, const std::string& case_name) {
+  nlohmann::json head = {{"case", case_name},   {"dimension", c.dimension}, {"particles", c.particles},
+                         {"precision", c.precision}, {"time", c.time},      {"last_dt", c.last_dt},
+                         {"first_dt", c.first_dt},   {"steps", c.steps},     {"fields", nlohmann::json::array()}};
+  for (const auto& f : c.fields)
+    head["fields"].push_back({{"name", f.name}, {"element_bytes", f.element_bytes}, {"bytes", f.bytes.size()}});
+  const std::string tmp = path + ".partial";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw CheckpointError(path + ": cannot create the checkpoint file");
+    out << kMagic << '\n' << head.dump() << '\n';
+    for (const auto& f : c.fields) out.write(reinterpret_cast<const char*>(f.bytes.data()), std::streamsize(f.bytes.size()));
+    out.flush();
+    if (!out) {
+      out.close();
+      std::remove(tmp.c_str());
+      throw CheckpointError(path + ": writing the checkpoint failed (disk full?)");
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) throw CheckpointError(path + ": cannot rename the finished checkpoint: " + ec.message());
+}
+
+Checkpoint read_checkpoint_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw CheckpointError(path + ": cannot open the checkpoint file");
+  std::string magic, line;
+  std::getline(in, magic);
+  if (magic != kMagic) throw CheckpointError(path + ": not a poresph checkpoint (expected a first line '" + kMagic + "')");
+  std::getline(in, line);
+  Checkpoint c;
+  nlohmann::json head;
+  try {
+    head = nlohmann::json::parse(line);
+    c.dimension = head.at("dimension").get<int>();
+    c.particles = head.at("particles").get<int>();
+    c.precision = head.at("precision").get<std::string>();
+    c.time = head.at("time").get<double>();
+    c.last_dt = head.at("last_dt").get<double>();
+    c.first_dt = head.at("first_dt").get<double>();
+    c.steps = head.at("steps").get<long>();
+    for (const auto& f : head.at("fields")) {
+      CheckpointField cf;
+      cf.name = f.at("name").get<std::string>();
+      cf.element_bytes = f.at("element_bytes").get<std::size_t>();
+      cf.bytes.resize(f.at("bytes").get<std::size_t>());
+      c.fields.push_back(std::move(cf));
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw CheckpointError(path + ": damaged checkpoint header: " + e.what());
+  }
+  for (auto& f : c.fields) {
+    in.read(reinterpret_cast<char*>(f.bytes.data()), std::streamsize(f.bytes.size()));
+    if (!in) throw CheckpointError(path + ": the checkpoint is truncated in field '" + f.name + "'");
+  }
+  if (in.peek() != std::char_traits<char>::eof())
+    throw CheckpointError(path + ": unexpected bytes after the last field");
+  return c;
+}
+
+std::string latest_checkpoint(const std::string& dir) {
+  fs::path d(dir);
+  if (fs::is_directory(d / "checkpoints")) d /= "checkpoints";
+  std::string best;
+  if (!fs::is_directory(d)) return best;
+  for (const auto& e : fs::directory_iterator(d)) {
+    const std::string name = e.path().filename().string();
+    // step_<zero-padded step>.ckpt: the lexicographic maximum is the newest
+    if (e.is_regular_file() && name.rfind("step_", 0) == 0 && e.path().extension() == ".ckpt" &&
+        (best.empty() || name > fs::path(best).filename().string()))
+      best = e.path().string();
+  }
+  return best;
+}
+
+}  // namespace psph

@@ -1,0 +1,25 @@
+#pragma once
+// A complete, backend-independent copy of a run's state: every registered field, byte for byte, plus
+// the clock. Taken right after a neighbour rebuild, so that a run restored from it continues
+// bitwise identically to the run that wrote it (io/checkpoint_file.hpp stores it).
+#include <string>
+#include <vector>
+
+namespace psph {
+
+struct CheckpointField {
+  std::string name;
+  std::size_t element_bytes = 0;
+  std::vector<unsigned char> bytes;  // particles * element_bytes
+};
+
+struct Checkpoint {
+  int dimension = 0;
+  int particles = 0;
+  std::string precision;  // "double" or "single"
+  double time = 0, last_dt = 0, first_dt = 0;
+  long steps = 0;
+  std::vector<CheckpointField> fields;
+};
+
+}  // namespace psph

@@ -1,0 +1,114 @@
+// Checkpoints: a restored run continues bitwise identically, and bad checkpoint files are refused
+// with a message naming the file and what is wrong.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "engine/engine.hpp"
+#include "io/checkpoint_file.hpp"
+#include "scene/case_file.hpp"
+#include "scene/embedded_cases.hpp"
+#include "scene/scene_builder.hpp"
+
+using namespace psph;
+namespace fs = std::filesystem;
+
+namespace {
+
+Case embedded(const std::string& name, double spacing_scale = 1) {
+  for (const auto& ec : embedded_cases())
+    if (name == ec.name) {
+      Case c = load_case_text(ec.text, name);
+      if (spacing_scale != 1) {
+        toml::table t = toml::parse(ec.text);
+        set_case_value(t, "discretisation.spacing", toml::value<double>(c.scene.options.spacing * spacing_scale));
+        c = parse_case(t, name);
+      }
+      build_particles(c);
+      return c;
+    }
+  throw std::runtime_error("no case " + name);
+}
+
+std::vector<double> state(Engine& e) {
+  std::vector<double> out;
+  for (const char* f : {"position", "velocity", "density", "pressure", "acceleration"}) {
+    const auto v = e.field(f);
+    out.insert(out.end(), v.begin(), v.end());
+  }
+  return out;
+}
+
+std::string temp_file(const std::string& name) { return (fs::temp_directory_path() / name).string(); }
+
+template <class F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(Checkpoint, RestoredRunContinuesBitwise) {
+  // 2D Poiseuille (walls, summation density) and the 3D dam break (continuity, free surface).
+  for (const char* name : {"poiseuille_2d", "dam_break_3d"}) {
+    Case c = embedded(name);
+    auto a = make_cpu_engine(c.scene);
+    for (int s = 0; s < 20; ++s) a->step(1e9);
+    const std::string file = temp_file(std::string("psph_ck_") + name + ".ckpt");
+    write_checkpoint_file(file, a->checkpoint(), c.name);
+    for (int s = 0; s < 25; ++s) a->step(1e9);
+
+    auto b = make_cpu_engine(c.scene);
+    b->restore(read_checkpoint_file(file));
+    EXPECT_EQ(b->steps(), 20) << name;
+    for (int s = 0; s < 25; ++s) b->step(1e9);
+    EXPECT_EQ(a->time(), b->time()) << name;
+    EXPECT_EQ(state(*a), state(*b)) << name;  // bitwise
+    fs::remove(file);
+  }
+}
+
+TEST(Checkpoint, RefusesAnotherScene) {
+  Case c = embedded("poiseuille_2d");
+  auto a = make_cpu_engine(c.scene);
+  const Checkpoint ck = a->checkpoint();
+  Case other = embedded("poiseuille_2d", 0.5);
+  auto b = make_cpu_engine(other.scene);
+  EXPECT_NE(error_of([&] { b->restore(ck); }).find("particle count"), std::string::npos);
+  Case three = embedded("poiseuille_couette");
+  auto d = make_cpu_engine(three.scene);
+  EXPECT_NE(error_of([&] { d->restore(ck); }).find("dimension"), std::string::npos);
+}
+
+TEST(Checkpoint, DamagedFilesAreRefused) {
+  Case c = embedded("poiseuille_2d");
+  auto a = make_cpu_engine(c.scene);
+  const std::string file = temp_file("psph_ck_damaged.ckpt");
+  write_checkpoint_file(file, a->checkpoint(), c.name);
+  EXPECT_FALSE(fs::exists(file + ".partial"));
+  const auto size = fs::file_size(file);
+
+  fs::resize_file(file, size - 8);
+  std::string msg = error_of([&] { read_checkpoint_file(file); });
+  EXPECT_NE(msg.find(file), std::string::npos) << msg;
+  EXPECT_NE(msg.find("truncated"), std::string::npos) << msg;
+
+  std::ofstream(file) << "not a checkpoint\n";
+  msg = error_of([&] { read_checkpoint_file(file); });
+  EXPECT_NE(msg.find("not a poresph checkpoint"), std::string::npos) << msg;
+
+  std::ofstream(file) << "PORESPH-CHECKPOINT 1\n{\"dimension\": 2}\n";
+  msg = error_of([&] { read_checkpoint_file(file); });
+  EXPECT_NE(msg.find("damaged checkpoint header"), std::string::npos) << msg;
+
+  msg = error_of([&] { read_checkpoint_file(temp_file("psph_no_such.ckpt")); });
+  EXPECT_NE(msg.find("cannot open"), std::string::npos) << msg;
+  fs::remove(file);
+}
