@@ -51,6 +51,25 @@ TEST(Kernel, DerivativesMatchFiniteDifferences) {
   }
 }
 
+template <int D>
+void check_gradient_factor() {
+  for (int t = 0; t < 3; ++t) {
+    const Kernel<D> k = Kernel<D>::make(static_cast<KernelType>(t), Real(0.7));
+    for (double r = 1e-4; r < 0.7; r += 0.0173) {
+      const double expect = k.dWdr(Real(r)) / r;
+      EXPECT_NEAR(k.F(Real(r)), expect, 1e-12 * std::fabs(k.F(Real(1e-4))) + 1e-12) << D << "D kernel " << t << " r " << r;
+    }
+    EXPECT_TRUE(std::isfinite(k.F(Real(0)))) << D << "D kernel " << t;
+    EXPECT_EQ(k.F(Real(0.7)), 0.0);
+  }
+}
+
+TEST(Kernel, GradientFactorIsDerivativeOverDistance) {
+  check_gradient_factor<1>();
+  check_gradient_factor<2>();
+  check_gradient_factor<3>();
+}
+
 TEST(Corrections, DeptulskiTable21PairValues) {
   const std::vector<double> p = deptulski_table_2_1_pairs();
   EXPECT_NEAR(p[0], 3.879, 1e-3);

@@ -1,4 +1,5 @@
 // poresph bench: throughput of the single-phase step.
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -61,11 +62,22 @@ int stability(bool json, const std::string& backend, bool quick) {
 
 }  // namespace
 
-int cmd_bench(bool json, const std::string& backend, bool quick, bool accuracy_sweep, bool stability_sweep_) {
+int cmd_bench(const std::vector<std::string>& names, bool json, const std::string& backend, bool quick,
+              bool accuracy_sweep, bool stability_sweep_) {
   if (accuracy_sweep) return accuracy(json, backend, quick);
   if (stability_sweep_) return stability(json, backend, quick);
+  std::vector<BenchSpec> specs;
+  for (const BenchSpec& spec : bench_specs(backend, quick))
+    if (names.empty() || std::find(names.begin(), names.end(), spec.name) != names.end()) specs.push_back(spec);
+  for (const auto& n : names)
+    if (std::none_of(specs.begin(), specs.end(), [&](const BenchSpec& s) { return s.name == n; })) {
+      std::cerr << "poresph bench: unknown benchmark '" << n << "'; expected one of:";
+      for (const BenchSpec& spec : bench_specs(backend, quick)) std::cerr << " " << spec.name;
+      std::cerr << "\n";
+      return 2;
+    }
   nlohmann::json out = nlohmann::json::array();
-  for (const BenchSpec& spec : bench_specs(backend, quick)) {
+  for (const BenchSpec& spec : specs) {
     BenchResult r;
     try {
       r = run_bench(spec, backend, json ? &std::cerr : &std::cout);

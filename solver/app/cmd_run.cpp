@@ -95,7 +95,10 @@ int drive(Case& c, const RunOptions& opt) {
   // The next output times after the start (a restart starts part-way).
   auto next_index = [&](double interval) { return long(std::floor(engine->time() / interval * (1 + 1e-12))) + 1; };
   long n_mon = next_index(dt_mon), n_ext = next_index(dt_ext), n_ck = next_index(dt_ck);
+  long last_checkpoint_step = -1;
   auto checkpoint = [&] {
+    if (engine->steps() == last_checkpoint_step) return;
+    last_checkpoint_step = engine->steps();
     try {
       rd->log("checkpoint " + rd->save_checkpoint(*engine, c.name, c.output.checkpoint_keep));
     } catch (const std::exception& e) {
@@ -126,7 +129,7 @@ int drive(Case& c, const RunOptions& opt) {
         if (extracts) writer.write(*engine);
         while (n_ext * dt_ext <= t * (1 + 1e-12)) ++n_ext;
       }
-      if (t >= n_ck * dt_ck * (1 - 1e-12) && t < t_end) {
+      if (t >= n_ck * dt_ck * (1 - 1e-12)) {
         checkpoint();
         while (n_ck * dt_ck <= t * (1 + 1e-12)) ++n_ck;
       }

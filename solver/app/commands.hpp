@@ -18,6 +18,8 @@ int cmd_run(const std::string& case_path, const RunOptions& opt);
 int cmd_demo(const RunOptions& opt);
 int cmd_check(const std::string& case_path);
 int cmd_validate(const std::vector<std::string>& names, bool full, bool json, const std::string& backend);
-int cmd_bench(bool json, const std::string& backend, bool quick, bool accuracy, bool stability);
+// `names`: benchmarks to run (default all); an unknown name is exit 2.
+int cmd_bench(const std::vector<std::string>& names, bool json, const std::string& backend, bool quick,
+              bool accuracy, bool stability);
 
 }  // namespace psph

@@ -31,6 +31,8 @@ int main(int argc, char** argv) {
   validate->add_option("--backend", vbackend, "cpu or cuda")->check(CLI::IsMember(backends));
 
   auto* bench = app.add_subcommand("bench", "measure the speed of the solver");
+  std::vector<std::string> bench_names;
+  bench->add_option("names", bench_names, "benchmarks to run, e.g. dam_break_3d (default: all)");
   bench->add_flag("--json", json, "print JSON records");
   bench->add_flag("--quick", quick, "small sizes only (a smoke run); with --accuracy: no sphere arrays");
   bench->add_flag("--accuracy", accuracy, "run time against error over kernels and resolutions");
@@ -46,7 +48,7 @@ int main(int argc, char** argv) {
   if (*run) return psph::cmd_run(case_path, ro);
   if (*check) return psph::cmd_check(case_path);
   if (*validate) return psph::cmd_validate(names, full, json, vbackend);
-  if (*bench) return psph::cmd_bench(json, vbackend, quick, accuracy, stability);
+  if (*bench) return psph::cmd_bench(bench_names, json, vbackend, quick, accuracy, stability);
   if (*demo) return psph::cmd_demo(ro);
   return 1;
 }

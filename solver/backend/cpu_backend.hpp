@@ -57,7 +57,7 @@ struct CpuBackend {
 
   template <class F>
   static void for_each(int n, const F& f) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, 256)
     for (int i = 0; i < n; ++i) f(i);
   }
 

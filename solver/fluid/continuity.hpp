@@ -32,7 +32,7 @@ struct ContinuityPass {
     Real div = 0, diffusion = 0;
     auto pair = [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
       if (!(r > Real(0))) return;
-      const Real F = kern.dWdr(r) / r;
+      const Real F = kern.F(r);
       const Real V_j = s.m[j] / s.rho[j];
       div += V_j * dot(v_i - s.v[j], rij) * F;  // eq. 53a
       // delta-SPH: 2 delta h_s c sum_j V_j (rho_j - rho_i) (r_ji . grad_i W_ij) / r^2 over fluid

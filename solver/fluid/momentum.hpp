@@ -52,7 +52,7 @@ struct FluidForcePass {
       const Real m_j = s.m[j];
       const Real inv_rho_j = Real(1) / rho_j;
       const Real V_j = m_j * inv_rho_j;
-      const Real dw_r = kern.dWdr(r) / r;  // F_ij = (1/r) dW/dr, grad_i W_ij = r_ij F_ij
+      const Real dw_r = kern.F(r);  // grad_i W_ij = r_ij F_ij
       const Vec<D> vij = v_i - s.v[j];
       const bool fluid_j = mats.is_fluid(mj);
       // Pressure, symmetric form (Pazdniakou eq. 54b in eq. 57).
@@ -61,9 +61,10 @@ struct FluidForcePass {
       // sign that makes it repulsive).
       const Real vr = dot(vij, rij);
       if (opt.artificial_viscosity > Real(0) && vr < Real(0)) {
-        const Real mu_ab = hs * vr / (r * r + Real(0.01) * hs * hs);
+        // Pi_ij = -alpha c_mean mu_ij / rho_mean, mu_ij = h vr / (r^2 + 0.01 h^2): one division.
         const Real c_j = fluid_j ? mats[mj].sound_speed : c_i;
-        pterm += m_j * (-opt.artificial_viscosity * Real(0.5) * (c_i + c_j) * mu_ab) / (Real(0.5) * (rho_i + rho_j));
+        pterm -= m_j * opt.artificial_viscosity * (c_i + c_j) * hs * vr /
+                 ((r * r + Real(0.01) * hs * hs) * (rho_i + rho_j));
       }
       acc -= rij * (pterm * dw_r);
       // Viscosity, Morris form with harmonic-mean viscosity (eqs. 55/56). A wall takes the fluid's

@@ -94,13 +94,32 @@ struct Kernel {
     return 0;
   }
 
+  // f'(q)/q, finite at q = 0, without a division where the polynomial allows it.
+  PSPH_HD static Real df_over_q(KernelType t, Real q) {
+    if (q >= Real(1)) return 0;
+    switch (t) {
+      case KernelType::CubicSpline: {
+        const Real a = Real(1) - q;
+        return q < Real(0.5) ? Real(18) * q - Real(12) : Real(-6) * a * a / q;
+      }
+      case KernelType::WendlandC2: {
+        const Real a = Real(1) - q;
+        if (D == 1) return Real(-12) * a * a;
+        return Real(-20) * a * a * a;
+      }
+      case KernelType::QuinticSpline:
+        return q > Real(0) ? df(t, q) / q : Real(0);
+    }
+    return 0;
+  }
+
   PSPH_HD Real W(Real r) const { return norm * f(type, r * inv_support); }
   // dW/dr (<= 0).
   PSPH_HD Real dWdr(Real r) const { return norm * inv_support * df(type, r * inv_support); }
-  // grad_i W_ij = r_ij / r * dW/dr with r_ij = x_i - x_j (Pazdniakou eq. 46, Deptulski eq. 2.36).
-  PSPH_HD Vec<D> grad(const Vec<D>& rij, Real r) const {
-    return r > Real(0) ? rij * (dWdr(r) / r) : Vec<D>::zero();
-  }
+  // F(r) = (1/r) dW/dr, so that grad_i W_ij = r_ij F(r) with r_ij = x_i - x_j (Pazdniakou eq. 46,
+  // Deptulski eq. 2.36). The pair passes use it: one division less per pair.
+  PSPH_HD Real F(Real r) const { return norm * inv_support * inv_support * df_over_q(type, r * inv_support); }
+  PSPH_HD Vec<D> grad(const Vec<D>& rij, Real r) const { return r > Real(0) ? rij * F(r) : Vec<D>::zero(); }
 };
 
 }  // namespace psph
