@@ -4,6 +4,7 @@
 
 #include "kernels/corrections.hpp"
 #include "kernels/kernel.hpp"
+#include "kernels/laplacian_correction.hpp"
 #include "neighbours/host_neighbours.hpp"
 #include "scene/scene_builder.hpp"
 #include "validation/operator_checks.hpp"
@@ -156,4 +157,48 @@ TEST(Lattice, NeighbourCountsOfPazdniakouResolutions) {
   }
   // And the lattice sum the masses are built from: sum_j W_ij V_j = 0.99997 at h/2 (digest §2.2).
   EXPECT_NEAR(lattice_kernel_sum(3, KernelType::CubicSpline, 2.0, 1.0), 0.99997, 2e-5);
+}
+
+// The Morris Laplacian of a quadratic field on a sheared lattice: the trace form is off, the tensor
+// form (kernels/laplacian_correction.hpp) exact.
+template <int D>
+void check_laplacian_tensor() {
+  const double dx = 1.0, R = 2.0 * dx, shear = 0.3, V = 1.0;  // V = dx^D
+  const Kernel<D> k = Kernel<D>::make(KernelType::CubicSpline, Real(R));
+  Real H[3][3] = {{1.0, 0.4, -0.2}, {0.4, -2.0, 0.7}, {-0.2, 0.7, 0.5}};
+  auto u = [&](const Vec<D>& x) {
+    Real s = 0;
+    for (int a = 0; a < D; ++a)
+      for (int b = 0; b < D; ++b) s += 0.5 * H[a][b] * x[a] * x[b];
+    return s;
+  };
+  std::vector<Vec<D>> nb;  // neighbours r_j = x_j - x_i of a particle at the origin
+  const int m = 3;
+  for (int c = 0; c < (D == 2 ? 1 : 2 * m + 1); ++c)
+    for (int b = -m; b <= m; ++b)
+      for (int a = -m; a <= m; ++a) {
+        Vec<D> r;
+        r[0] = (a + shear * b) * dx, r[1] = b * dx;
+        if (D == 3) r[2] = (c - m) * dx;
+        if (norm(r) > 0 && norm(r) < R) nb.push_back(r);
+      }
+  LaplacianTensor<D> lt;
+  for (const auto& r : nb) lt.add(V, k.F(norm(r)), r);
+  Mat<D> A;
+  ASSERT_TRUE(lt.solve(A));
+  Real plain = 0, tensor = 0, lambda = 0, trace = 0;
+  for (int a = 0; a < D; ++a) trace += H[a][a];
+  for (const auto& r : nb) {
+    const Real term = 2 * V * (u(Vec<D>::zero()) - u(r)) * k.F(norm(r));
+    plain += term;
+    tensor += term * LaplacianTensor<D>::weight(A, r);
+    lambda -= V * norm2(r) * k.F(norm(r));
+  }
+  EXPECT_NEAR(tensor, trace, 1e-10 * std::fabs(trace)) << D << "D";
+  EXPECT_GT(std::fabs(plain * D / lambda - trace), 1e-3 * std::fabs(trace)) << D << "D: the trace form should miss";
+}
+
+TEST(Kernel, TensorLaplacianIsExactOnShearedLattices) {
+  check_laplacian_tensor<2>();
+  check_laplacian_tensor<3>();
 }

@@ -296,7 +296,7 @@ class Simulation final : public Engine {
     if (has_walls_) B::for_each(n_, WallVelocityPass<D>{view_nb(), kern_, s_.view(), mats_, opt_.wall_noslip});
     FluidForceOptions fo;
     fo.xsph = Real(opt_.xsph);
-    fo.laplacian_normalised = opt_.laplacian_normalised;
+    fo.laplacian = opt_.laplacian_correction;
     fo.artificial_viscosity = Real(opt_.artificial_viscosity);
     fo.smoothing_length = Real(smoothing_length());
     B::for_each(n_, FluidForcePass<D>{view_nb(), kern_, s_.view(), mats_, fo});

@@ -3,6 +3,7 @@
 // viscosity and XSPH. Gather form: each particle writes only its own outputs.
 #include "fluid/material.hpp"
 #include "kernels/kernel.hpp"
+#include "kernels/laplacian_correction.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
 
@@ -10,7 +11,7 @@ namespace psph {
 
 struct FluidForceOptions {
   Real xsph = 0;                     // XSPH epsilon (eq. 76), 0 = off
-  bool laplacian_normalised = true;  // divide the viscous sum by lambda_i (see below)
+  LaplacianCorrection laplacian = LaplacianCorrection::Trace;  // of the viscous sum (see below)
   Real artificial_viscosity = 0;     // Monaghan alpha (Deptulski eq. 2.64), 0 = off
   Real smoothing_length = 0;         // h_s, for the artificial viscosity
 };
@@ -36,14 +37,23 @@ struct FluidForcePass {
     Vec<D> acc = Vec<D>::zero(), visc = Vec<D>::zero(), xs = Vec<D>::zero();
     // lambda_i = -sum_j V_j r_ij^2 F_ij is D in the continuum; on a lattice with support = 2
     // spacings it is 1.013 D (2D) and 1.020 D (3D), the relative error of the Morris Laplacian
-    // there. Dividing by lambda_i / D makes the operator exact for quadratic fields on any lattice
-    // (a trace form of the second-derivative correction of Fatehi & Manzari 2011).
+    // there. Dividing by lambda_i / D (the trace form) makes the operator exact for quadratic
+    // fields on cubic lattices; the tensor form also on sheared ones (kernels/laplacian_correction.hpp).
     Real lambda = 0;
 
     if (!fluid_i) {
       s.a[i] = Vec<D>::zero();
       s.v_xsph[i] = Vec<D>::zero();
       return;
+    }
+    Mat<D> A = Mat<D>::identity();
+    bool tensor = opt.laplacian == LaplacianCorrection::Tensor;
+    if (tensor) {
+      LaplacianTensor<D> lt;
+      nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
+        if (r > Real(0)) lt.add(s.m[j] / s.rho[j], kern.F(r), rij);
+      });
+      tensor = lt.solve(A);  // a degenerate neighbourhood falls back to the trace form
     }
     nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
       if (!(r > Real(0))) return;  // coincident particles exert no pair force (avoids 0/0)
@@ -73,13 +83,16 @@ struct FluidForcePass {
       const Vec<D> vij_visc = fluid_j ? vij : v_i - s.v_noslip[j];
       const Real mu_j = fluid_j ? mats[mj].viscosity : mu_i;
       const Real mu_sum = mu_i + mu_j;
-      if (mu_sum > Real(0)) visc += vij_visc * (Real(4) * mu_i * mu_j / mu_sum * V_j * inv_rho_i * dw_r);
+      if (mu_sum > Real(0)) {
+        const Real w = tensor ? LaplacianTensor<D>::weight(A, rij) : Real(1);
+        visc += vij_visc * (Real(4) * mu_i * mu_j / mu_sum * V_j * inv_rho_i * dw_r * w);
+      }
       lambda -= V_j * r * r * dw_r;
       // XSPH over the same material, with the kernel factor restored (eq. 76, digest §7 item 2).
       if (opt.xsph > Real(0) && mj == mi) xs -= vij * (Real(2) * m_j / (rho_i + rho_j) * kern.W(r));
     });
 
-    if (opt.laplacian_normalised && lambda > Real(0)) visc *= Real(D) / lambda;
+    if (!tensor && opt.laplacian != LaplacianCorrection::None && lambda > Real(0)) visc *= Real(D) / lambda;
     s.a[i] = acc + visc + mats.body_force[mi];
     s.lap_v[i] = mu_i > Real(0) ? visc * (rho_i / mu_i) : Vec<D>::zero();
     s.v_xsph[i] = xs * opt.xsph;

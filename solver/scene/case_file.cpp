@@ -278,7 +278,12 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
                        ? Integrator::Leapfrog : Integrator::VelocityVerlet;
     const std::string ns = r.choice("wall_noslip", {"curved", "mirror", "prescribed"}, "curved");
     o.wall_noslip = ns == "prescribed" ? WallNoSlip::Prescribed : ns == "mirror" ? WallNoSlip::Mirror : WallNoSlip::Curved;
-    o.laplacian_normalised = r.boolean("laplacian_normalised", true);
+    {
+      const std::string lc = r.choice("laplacian_correction", {"trace", "tensor", "none"}, "trace");
+      o.laplacian_correction = lc == "tensor" ? LaplacianCorrection::Tensor
+                               : lc == "none" ? LaplacianCorrection::None
+                                              : LaplacianCorrection::Trace;
+    }
     o.wall_pressure = r.choice("wall_pressure", {"extrapolated", "summation"}, "extrapolated") == "summation"
                           ? WallPressure::Summation : WallPressure::Extrapolated;
     o.xsph = r.non_negative("xsph", 0.0);

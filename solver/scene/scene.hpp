@@ -9,6 +9,7 @@
 #include "boundary/wall_velocity.hpp"
 #include "fluid/material.hpp"
 #include "kernels/kernel.hpp"
+#include "kernels/laplacian_correction.hpp"
 
 namespace psph {
 
@@ -33,7 +34,7 @@ struct SolverOptions {
   double density_diffusion = 0;     // delta-SPH delta (continuity only)
   WallNoSlip wall_noslip = WallNoSlip::Curved;
   WallPressure wall_pressure = WallPressure::Extrapolated;
-  bool laplacian_normalised = true;  // viscous Laplacian divided by its lattice sum (momentum.hpp)
+  LaplacianCorrection laplacian_correction = LaplacianCorrection::Trace;  // kernels/laplacian_correction.hpp
   double dt_factor = 1;       // scales every time-step limit
   double neighbour_skin = 0.1;  // Verlet-list skin as a fraction of the support radius
   double fixed_dt = 0;        // > 0: constant step instead of the adaptive one

@@ -81,11 +81,11 @@ const std::vector<ValidationCase>& validation_cases() {
        [](const ValidationContext&) { return operator_checks(); }},
       {"poiseuille_2d", "2D plane Poiseuille flow from rest against the transient series",
        [](const ValidationContext& ctx) { return channel_profile(ctx, "poiseuille_2d", {0.02, 0.1, 0.5}, 0.005); }},
-      // Goal 0.5 % (issue), paper 0.4 %. Measured 0.48 / 0.12 / 0.05 / 0.51 % (VALIDATION.md); the
-      // tolerance keeps 0.1 percentage point over the worst measured time as a regression bound.
+      // Goal 0.5 % (issue), paper 0.4 %. Measured 0.48 / 0.12 / 0.05 / 0.38 % with the tensor
+      // Laplacian the case file selects (VALIDATION.md).
       {"poiseuille_couette", "Pazdniakou 2018 §4.1 transient Poiseuille-Couette flow (paper: 0.4 %)",
        [](const ValidationContext& ctx) {
-         return channel_profile(ctx, "poiseuille_couette", {0.01, 0.04, 0.08, 1.0}, 0.006);
+         return channel_profile(ctx, "poiseuille_couette", {0.01, 0.04, 0.08, 1.0}, 0.005);
        }},
       {"sphere_permeability", "Pazdniakou 2018 §4.2 permeability of periodic sphere arrays (Tables 2-3)",
        sphere_permeability},
