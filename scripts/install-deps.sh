@@ -8,7 +8,10 @@ set -euo pipefail
 pkgs=(build-essential cmake ninja-build libomp-dev
       libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
       libgtest-dev libbenchmark-dev)
-[[ "${1:-}" == "--minimal" ]] || pkgs+=(paraview-dev python3-paraview)  # ParaView's CMake package needs its Python modules
+# ParaView: its CMake package needs its Python modules and the -dev packages its exported
+# targets name (MPI, GLEW, NetCDF, HDF5); Xvfb renders headless, ffmpeg assembles MP4s.
+[[ "${1:-}" == "--minimal" ]] || pkgs+=(paraview-dev python3-paraview libopenmpi-dev libglew-dev libnetcdf-dev
+                                        libhdf5-dev libx11-dev libfreetype-dev libboost-dev libxml2-dev xvfb ffmpeg)
 
 missing=()
 for p in "${pkgs[@]}"; do

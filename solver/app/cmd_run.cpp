@@ -1,4 +1,5 @@
 // poresph run / check / demo: load and check a case, then drive the run and its run directory.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -9,6 +10,8 @@
 #include <sstream>
 
 #include "app/commands.hpp"
+#include "catalyst/figures.hpp"
+#include "catalyst/insitu_session.hpp"
 #include "engine/engine.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/particle_output.hpp"
@@ -68,6 +71,13 @@ int drive(Case& c, const RunOptions& opt) {
       return 2;
     }
   }
+  std::unique_ptr<InSituSession> insitu;
+  try {
+    insitu = std::make_unique<InSituSession>(c, opt.pipelines, opt.live);
+  } catch (const std::exception& e) {
+    std::cerr << "poresph: " << e.what() << "\n";
+    return 2;
+  }
   const std::string dir = opt.out.empty() ? default_run_directory(c.name) : opt.out;
   std::unique_ptr<RunDirectory> rd;
   try {
@@ -87,14 +97,24 @@ int drive(Case& c, const RunOptions& opt) {
 
   const bool extracts = particle_output_available();
   if (!extracts) rd->log("note: built without ParaView's VTK, no particle extracts are written");
-  ParticleWriter writer(rd->extracts(), c.output.fields);
+  if (!insitu->note().empty()) rd->log(insitu->note());
+  // Extracts hold what the pipelines need, so that `poresph figures` can re-render from them.
+  std::vector<std::string> extract_fields = c.output.fields;
+  const std::vector<std::string> have = engine->field_names();
+  for (const auto& f : insitu->fields())
+    if (std::count(extract_fields.begin(), extract_fields.end(), f) == 0 && std::count(have.begin(), have.end(), f))
+      extract_fields.push_back(f);
+  ParticleWriter writer(rd->extracts(), extract_fields);
   const double t_end = c.end_time;
   const double dt_mon = c.output.monitor_interval > 0 ? c.output.monitor_interval : t_end / 100;
-  const double dt_ext = c.output.extract_interval > 0 ? c.output.extract_interval : t_end;
+  // With pipelines: a frame every visualisation.interval (default a fiftieth of the run), and
+  // extracts at the same times unless output.extract_interval says otherwise.
+  const double dt_vis = c.visualisation.interval > 0 ? c.visualisation.interval : t_end / 50;
+  const double dt_ext = c.output.extract_interval > 0 ? c.output.extract_interval : insitu->active() ? dt_vis : t_end;
   const double dt_ck = c.output.checkpoint_interval > 0 ? c.output.checkpoint_interval : t_end / 10;
   // The next output times after the start (a restart starts part-way).
   auto next_index = [&](double interval) { return long(std::floor(engine->time() / interval * (1 + 1e-12))) + 1; };
-  long n_mon = next_index(dt_mon), n_ext = next_index(dt_ext), n_ck = next_index(dt_ck);
+  long n_mon = next_index(dt_mon), n_ext = next_index(dt_ext), n_ck = next_index(dt_ck), n_vis = next_index(dt_vis);
   long last_checkpoint_step = -1;
   auto checkpoint = [&] {
     if (engine->steps() == last_checkpoint_step) return;
@@ -107,6 +127,14 @@ int drive(Case& c, const RunOptions& opt) {
   };
   rd->monitor(*engine);
   if (extracts) writer.write(*engine);
+  if (insitu->active()) {
+    try {
+      insitu->start(*engine, c, rd->path(), [&](const std::string& l) { rd->log(l); });
+    } catch (const std::exception& e) {
+      rd->log(std::string("failed: in-situ visualisation: ") + e.what());
+      return 4;
+    }
+  }
 
   g_signal = 0;
   std::signal(SIGINT, on_signal);
@@ -118,7 +146,7 @@ int drive(Case& c, const RunOptions& opt) {
   int code = 0;
   try {
     while (engine->time() < t_end) {
-      const double t_next = std::min({t_end, n_mon * dt_mon, n_ext * dt_ext});
+      const double t_next = std::min({t_end, n_mon * dt_mon, n_ext * dt_ext, insitu->active() ? n_vis * dt_vis : t_end});
       engine->step(t_next);
       const double t = engine->time();
       if (t >= n_mon * dt_mon * (1 - 1e-12)) {
@@ -128,6 +156,10 @@ int drive(Case& c, const RunOptions& opt) {
       if (t >= n_ext * dt_ext * (1 - 1e-12)) {
         if (extracts) writer.write(*engine);
         while (n_ext * dt_ext <= t * (1 + 1e-12)) ++n_ext;
+      }
+      if (insitu->active() && t >= n_vis * dt_vis * (1 - 1e-12)) {
+        insitu->output(*engine);
+        while (n_vis * dt_vis <= t * (1 + 1e-12)) ++n_vis;
       }
       if (t >= n_ck * dt_ck * (1 - 1e-12)) {
         checkpoint();
@@ -169,6 +201,16 @@ int drive(Case& c, const RunOptions& opt) {
   }
   if (extracts && status == "interrupted") writer.write(*engine);
   if (extracts) writer.write_collection();
+  nlohmann::json insitu_stats;
+  if (insitu->active()) {
+    try {
+      if (status == "interrupted") insitu->output(*engine);  // the state it stopped at, as a last frame
+      insitu->finish();
+    } catch (const std::exception& e) {
+      rd->log(std::string("warning: in-situ visualisation: ") + e.what());
+    }
+    insitu_stats = insitu->stats();
+  }
 
   const double wall = std::chrono::duration<double>(clock::now() - t0).count();
   const double steps = double(engine->steps());
@@ -184,6 +226,17 @@ int drive(Case& c, const RunOptions& opt) {
                       {"end_time", t_end},
                       {"wall_seconds", wall},
                       {"particle_steps_per_second", steps * engine->particles() / std::max(wall, 1e-9)}};
+  if (insitu->active()) {
+    const double share = (insitu_stats["staging_seconds"].get<double>() + insitu_stats["coprocess_seconds"].get<double>()) /
+                         std::max(wall, 1e-9);
+    insitu_stats["share_of_wall_time"] = share;
+    j["insitu"] = insitu_stats;
+    char line[200];
+    std::snprintf(line, sizeof line, "in situ: %ld frames, staging %.3g s, Catalyst %.3g s, %.1f %% of the wall time",
+                  insitu_stats["frames"].get<long>(), insitu_stats["staging_seconds"].get<double>(),
+                  insitu_stats["coprocess_seconds"].get<double>(), 100 * share);
+    rd->log(line);
+  }
   rd->write_summary(j);
   rd->log("run " + status + " after " + std::to_string(engine->steps()) + " steps in " + seconds_text(wall) +
           "; output in " + rd->path());
@@ -195,6 +248,12 @@ int drive(Case& c, const RunOptions& opt) {
 int cmd_check(const std::string& path) {
   Case c;
   if (!prepare(c, path, nullptr)) return 2;
+  try {
+    InSituSession pipelines(c, {}, "");  // the case's pipelines exist and declare their fields
+  } catch (const std::exception& e) {
+    std::cerr << "poresph: " << e.what() << "\n";
+    return 2;
+  }
   long fluid = 0;
   for (int m : c.scene.material) fluid += c.scene.materials[m].props.kind == MaterialKind::Fluid;
   std::cout << path << ": case " << c.name << " is valid: " << c.scene.count() << " particles (" << fluid
@@ -207,6 +266,10 @@ int cmd_run(const std::string& path, const RunOptions& opt) {
   Case c;
   if (!prepare(c, path, nullptr)) return 2;
   return drive(c, opt);
+}
+
+int cmd_figures(const std::string& run_dir, const std::vector<std::string>& pipelines) {
+  return render_figures(run_dir, pipelines, std::cerr);
 }
 
 int cmd_demo(const RunOptions& opt) {

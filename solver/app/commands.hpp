@@ -10,6 +10,8 @@ struct RunOptions {
   std::string out;  // run directory; empty = runs/<case>-<timestamp>
   bool quiet = false;
   std::string restart;  // checkpoint file, or a run directory (its newest checkpoint)
+  std::vector<std::string> pipelines;  // Catalyst pipelines (names in pipelines/ or .py paths)
+  std::string live;                    // HOST:PORT of a ParaView GUI for Catalyst Live
 };
 
 // Exit codes: 0 done, 2 bad input (nothing written), 3 unstable run (diagnostic in log.txt),
@@ -17,6 +19,8 @@ struct RunOptions {
 int cmd_run(const std::string& case_path, const RunOptions& opt);
 int cmd_demo(const RunOptions& opt);
 int cmd_check(const std::string& case_path);
+// Re-renders a run's figure sequences from its extracts (`pipelines` empty = the run's own).
+int cmd_figures(const std::string& run_dir, const std::vector<std::string>& pipelines);
 int cmd_validate(const std::vector<std::string>& names, bool full, bool json, const std::string& backend);
 // `names`: benchmarks to run (default all); an unknown name is exit 2.
 int cmd_bench(const std::vector<std::string>& names, bool json, const std::string& backend, bool quick,

@@ -1,4 +1,4 @@
-// poresph command line: run, check, validate, bench, demo.
+// poresph command line: run, check, validate, bench, demo, figures.
 #include <CLI/CLI.hpp>
 #include <vector>
 
@@ -17,6 +17,15 @@ int main(int argc, char** argv) {
   run->add_option("--out", ro.out, "run directory (default runs/<case>-<time>)");
   run->add_flag("--quiet", ro.quiet, "no progress lines on the terminal");
   run->add_option("--restart", ro.restart, "continue from a checkpoint file, or a run directory's newest checkpoint");
+  run->add_option("--pipeline", ro.pipelines, "Catalyst pipeline: a name in pipelines/ (phases, pressure, damage, "
+                 "principal_stress, colour) or a .py script; repeatable");
+  run->add_option("--live", ro.live, "HOST:PORT of a ParaView GUI to attach with Catalyst Live");
+
+  std::string run_dir;
+  std::vector<std::string> fig_pipelines;
+  auto* figures = app.add_subcommand("figures", "re-render a run's figure sequences from its extracts (pvbatch), MP4 with ffmpeg");
+  figures->add_option("rundir", run_dir, "run directory")->required();
+  figures->add_option("--pipeline", fig_pipelines, "pipelines to render (default: the run's own); repeatable");
 
   auto* check = app.add_subcommand("check", "validate a case file, run nothing");
   check->add_option("case", case_path, "case file (TOML)")->required();
@@ -47,6 +56,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   if (*run) return psph::cmd_run(case_path, ro);
   if (*check) return psph::cmd_check(case_path);
+  if (*figures) return psph::cmd_figures(run_dir, fig_pipelines);
   if (*validate) return psph::cmd_validate(names, full, json, vbackend);
   if (*bench) return psph::cmd_bench(bench_names, json, vbackend, quick, accuracy, stability);
   if (*demo) return psph::cmd_demo(ro);

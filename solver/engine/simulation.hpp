@@ -19,6 +19,7 @@
 #include "neighbours/fluid_proximity.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "scene/scene.hpp"
+#include "state/derived_fields.hpp"
 #include "state/particles.hpp"
 
 namespace psph {
@@ -115,12 +116,21 @@ class Simulation final : public Engine {
 
   std::vector<double> field(const std::string& name) override {
     std::vector<double> out;
-    s_.fields().get(name).to_host_double(out);
-    return out;
+    if (s_.fields().has(name)) {
+      s_.fields().get(name).to_host_double(out);
+      return out;
+    }
+    const std::vector<Material> materials(mats_.m, mats_.m + mats_.count);
+    return compute_derived_field(name, D, materials, [this](const std::string& src) { return field(src); });
   }
   std::vector<std::string> field_names() const override {
     std::vector<std::string> names;
     for (const auto& f : s_.fields().all()) names.push_back(f.info.name);
+    for (const auto& d : derived_fields()) {
+      bool ok = true;
+      for (const auto& src : d.sources) ok &= s_.fields().has(src);
+      if (ok) names.push_back(d.info.name);
+    }
     return names;
   }
 

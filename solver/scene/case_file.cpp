@@ -3,6 +3,8 @@
 #include "scene/case_file.hpp"
 
 #include "integrate/timestep.hpp"
+#include "scene/case_reader.hpp"
+#include "scene/visualisation_options.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -13,160 +15,6 @@
 namespace psph {
 namespace {
 
-std::string where(const toml::node& n) {
-  const auto& src = n.source();
-  return src.begin.line ? " (line " + std::to_string(src.begin.line) + ")" : "";
-}
-
-// Reads one table and remembers which keys were used.
-class Reader {
- public:
-  Reader(const toml::table& t, std::string file, std::string path)
-      : t_(t), file_(std::move(file)), path_(std::move(path)) {}
-
-  [[noreturn]] void fail(const std::string& key, const std::string& expected, const toml::node* n = nullptr) const {
-    throw CaseError(file_ + ": " + qualified(key) + (n ? where(*n) : "") + ": " + expected);
-  }
-  std::string qualified(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-
-  const toml::node* node(const std::string& key) {
-    used_.insert(key);
-    return t_.get(key);
-  }
-  bool has(const std::string& key) const { return t_.contains(key); }
-
-  double number(const std::string& key, std::optional<double> def = std::nullopt) {
-    const toml::node* n = node(key);
-    if (!n) {
-      if (def) return *def;
-      fail(key, "missing required value (expected a number)");
-    }
-    if (auto v = n->value<double>()) return *v;  // integers convert too
-    fail(key, std::string("expected a number, got ") + type_name(*n), n);
-  }
-  double positive(const std::string& key, std::optional<double> def = std::nullopt) {
-    const double v = number(key, def);
-    if (!(v > 0) || !std::isfinite(v)) fail(key, "expected a number > 0, got " + fmt(v), node(key));
-    return v;
-  }
-  double non_negative(const std::string& key, std::optional<double> def = std::nullopt) {
-    const double v = number(key, def);
-    if (!(v >= 0) || !std::isfinite(v)) fail(key, "expected a number >= 0, got " + fmt(v), node(key));
-    return v;
-  }
-  long integer(const std::string& key, std::optional<long> def = std::nullopt) {
-    const toml::node* n = node(key);
-    if (!n) {
-      if (def) return *def;
-      fail(key, "missing required value (expected an integer)");
-    }
-    if (auto v = n->value_exact<int64_t>()) return static_cast<long>(*v);
-    fail(key, std::string("expected an integer, got ") + type_name(*n), n);
-  }
-  long positive_integer(const std::string& key, long def) {
-    const long v = integer(key, def);
-    if (v < 1) fail(key, "expected an integer >= 1, got " + std::to_string(v), node(key));
-    return v;
-  }
-  std::string string(const std::string& key, std::optional<std::string> def = std::nullopt) {
-    const toml::node* n = node(key);
-    if (!n) {
-      if (def) return *def;
-      fail(key, "missing required value (expected a string)");
-    }
-    if (auto v = n->value_exact<std::string>()) return *v;
-    fail(key, std::string("expected a string, got ") + type_name(*n), n);
-  }
-  std::string choice(const std::string& key, const std::vector<std::string>& options,
-                     std::optional<std::string> def = std::nullopt) {
-    const std::string v = string(key, def);
-    for (const auto& o : options)
-      if (o == v) return v;
-    std::string list;
-    for (const auto& o : options) list += (list.empty() ? "" : ", ") + ("\"" + o + "\"");
-    fail(key, "expected one of " + list + ", got \"" + v + "\"", node(key));
-  }
-  bool boolean(const std::string& key, bool def) {
-    const toml::node* n = node(key);
-    if (!n) return def;
-    if (auto v = n->value_exact<bool>()) return *v;
-    fail(key, std::string("expected true or false, got ") + type_name(*n), n);
-  }
-  // An array of exactly `dim` numbers (or booleans when `T` is bool).
-  template <class T>
-  std::array<T, 3> vec(const std::string& key, int dim, std::optional<std::array<T, 3>> def = std::nullopt) {
-    const toml::node* n = node(key);
-    const char* what = std::is_same_v<T, bool> ? "booleans" : "numbers";
-    if (!n) {
-      if (def) return *def;
-      fail(key, "missing required value (expected an array of " + std::to_string(dim) + " " + what + ")");
-    }
-    const toml::array* arr = n->as_array();
-    if (!arr || static_cast<int>(arr->size()) != dim)
-      fail(key, "expected an array of " + std::to_string(dim) + " " + what + " (one per dimension)", n);
-    std::array<T, 3> out{};
-    for (int k = 0; k < dim; ++k) {
-      std::optional<T> v;
-      if constexpr (std::is_same_v<T, bool>) v = (*arr)[k].value_exact<bool>();
-      else v = (*arr)[k].value<T>();
-      if (!v) fail(key, "expected an array of " + std::to_string(dim) + " " + what, n);
-      out[k] = *v;
-    }
-    return out;
-  }
-  std::vector<std::string> strings(const std::string& key, std::vector<std::string> def) {
-    const toml::node* n = node(key);
-    if (!n) return def;
-    const toml::array* arr = n->as_array();
-    if (!arr) fail(key, "expected an array of strings", n);
-    std::vector<std::string> out;
-    for (const auto& e : *arr) {
-      auto v = e.value_exact<std::string>();
-      if (!v) fail(key, "expected an array of strings", n);
-      out.push_back(*v);
-    }
-    return out;
-  }
-  const toml::table& table(const std::string& key, bool required) {
-    const toml::node* n = node(key);
-    static const toml::table empty;
-    if (!n) {
-      if (required) fail(key, "missing required table [" + qualified(key) + "]");
-      return empty;
-    }
-    if (!n->is_table()) fail(key, "expected a table", n);
-    return *n->as_table();
-  }
-  // Rejects every key that was not read.
-  void finish() const {
-    for (const auto& [k, v] : t_) {
-      const std::string key(k.str());
-      if (!used_.count(key)) fail(key, "unknown key", &v);
-    }
-  }
-
-  static const char* type_name(const toml::node& n) {
-    switch (n.type()) {
-      case toml::node_type::string: return "a string";
-      case toml::node_type::integer: return "an integer";
-      case toml::node_type::floating_point: return "a number";
-      case toml::node_type::boolean: return "a boolean";
-      case toml::node_type::array: return "an array";
-      case toml::node_type::table: return "a table";
-      default: return "a date or time";
-    }
-  }
-  static std::string fmt(double v) {
-    std::ostringstream o;
-    o << v;
-    return o.str();
-  }
-
- private:
-  const toml::table& t_;
-  std::string file_, path_;
-  std::set<std::string> used_;
-};
 
 KernelType kernel_from(const std::string& s) {
   return s == "wendland_c2" ? KernelType::WendlandC2 : s == "quintic_spline" ? KernelType::QuinticSpline
@@ -178,11 +26,11 @@ KernelType kernel_from(const std::string& s) {
 Case parse_case(const toml::table& tbl, const std::string& file) {
   Case c;
   c.file = file;
-  Reader top(tbl, file, "");
+  CaseReader top(tbl, file, "");
   Scene& sc = c.scene;
 
   {
-    Reader r(top.table("case", true), file, "case");
+    CaseReader r(top.table("case", true), file, "case");
     c.name = r.string("name");
     if (c.name.empty() || c.name.find_first_of("/\\ \t") != std::string::npos)
       r.fail("name", "expected a non-empty name without spaces or slashes");
@@ -194,7 +42,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
   }
   const int D = sc.dimension;
   {
-    Reader r(top.table("domain", true), file, "domain");
+    CaseReader r(top.table("domain", true), file, "domain");
     sc.lower = r.vec<double>("lower", D);
     sc.upper = r.vec<double>("upper", D);
     sc.periodic = r.vec<bool>("periodic", D, std::array<bool, 3>{false, false, false});
@@ -204,7 +52,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
   }
   SolverOptions& o = sc.options;
   {
-    Reader r(top.table("discretisation", true), file, "discretisation");
+    CaseReader r(top.table("discretisation", true), file, "discretisation");
     o.spacing = r.positive("spacing");
     o.jitter = r.non_negative("jitter", 0.0);
     if (o.jitter > 0.5) r.fail("jitter", "expected a fraction of the spacing in [0, 0.5]");
@@ -219,7 +67,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       const double cells = (sc.upper[k] - sc.lower[k]) / o.spacing;
       if (sc.periodic[k] && std::fabs(cells - std::round(cells)) > 1e-6 * cells)
         r.fail("spacing", "expected the periodic domain length along axis " + std::to_string(k) +
-                              " to be a whole number of spacings (got " + Reader::fmt(cells) + ")");
+                              " to be a whole number of spacings (got " + CaseReader::fmt(cells) + ")");
       if (sc.periodic[k] && sc.upper[k] - sc.lower[k] < 3 * o.support_radius)
         r.fail("support_radius", "periodic axis " + std::to_string(k) + " is shorter than 3 support radii");
     }
@@ -234,7 +82,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       const std::string name(k.str());
       if (name == "empty") top.fail("materials.empty", "\"empty\" is reserved for removing particles");
       if (!v.is_table()) top.fail("materials." + name, "expected a table", &v);
-      Reader r(*v.as_table(), file, "materials." + name);
+      CaseReader r(*v.as_table(), file, "materials." + name);
       SceneMaterial m;
       m.name = name;
       const std::string kind = r.choice("kind", {"fluid", "wall"});
@@ -270,7 +118,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       }
   }
   {
-    Reader r(top.table("solver", false), file, "solver");
+    CaseReader r(top.table("solver", false), file, "solver");
     const std::string d = r.choice("density", {"summation", "normalised_summation", "continuity"}, "summation");
     o.density = d == "continuity" ? DensityMethod::Continuity
                 : d == "normalised_summation" ? DensityMethod::NormalisedSummation : DensityMethod::Summation;
@@ -299,7 +147,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     r.finish();
   }
   {
-    Reader r(top.table("time", true), file, "time");
+    CaseReader r(top.table("time", true), file, "time");
     c.end_time = r.positive("end");
     if (o.fixed_dt > c.end_time) r.fail("end", "expected an end time of at least one fixed step (solver.dt)");
     r.finish();
@@ -314,12 +162,12 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       const TimeStepLimits lim = time_step_limits(hs, c_max, 0.0, 0.0, nu_max, 1.0);
       const double limit = lim.min();
       if (o.fixed_dt > 2 * limit)
-        throw CaseError(file + ": solver.dt: a fixed step of " + Reader::fmt(o.fixed_dt) +
-                        " s is impossible: the acoustic/viscous stability limit is " + Reader::fmt(limit) + " s");
+        throw CaseError(file + ": solver.dt: a fixed step of " + CaseReader::fmt(o.fixed_dt) +
+                        " s is impossible: the acoustic/viscous stability limit is " + CaseReader::fmt(limit) + " s");
     }
   }
   {
-    Reader r(top.table("output", false), file, "output");
+    CaseReader r(top.table("output", false), file, "output");
     c.output.monitor_interval = r.non_negative("monitor_interval", 0.0);
     c.output.extract_interval = r.non_negative("extract_interval", 0.0);
     c.output.checkpoint_interval = r.non_negative("checkpoint_interval", 0.0);
@@ -327,6 +175,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     c.output.fields = r.strings("fields", c.output.fields);
     r.finish();
   }
+  c.visualisation = parse_visualisation(top.table("visualisation", false), file);
   {
     const toml::node* g = top.node("geometry");
     if (!g) top.fail("geometry", "missing required array of tables [[geometry]]");
@@ -334,7 +183,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     if (!arr || arr->empty() || !arr->is_array_of_tables()) top.fail("geometry", "expected an array of tables [[geometry]]", g);
     int idx = 0;
     for (const auto& e : *arr) {
-      Reader r(*e.as_table(), file, "geometry[" + std::to_string(idx++) + "]");
+      CaseReader r(*e.as_table(), file, "geometry[" + std::to_string(idx++) + "]");
       GeometryShape s;
       s.kind = r.choice("shape", {"box", "sphere"}) == "sphere" ? GeometryShape::Kind::Sphere : GeometryShape::Kind::Box;
       if (s.kind == GeometryShape::Kind::Box) {

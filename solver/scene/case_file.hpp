@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "scene/scene.hpp"
+#include "scene/visualisation_options.hpp"
 
 namespace psph {
 
@@ -41,6 +42,7 @@ struct Case {
   std::vector<GeometryShape> geometry;
   double end_time = 0;
   OutputOptions output;
+  VisualisationOptions visualisation;
   std::string source_text;  // the resolved case, as TOML
 };
 

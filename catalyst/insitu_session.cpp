@@ -1,0 +1,95 @@
+#include "catalyst/insitu_session.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+
+#include "catalyst/staging.hpp"
+#include "catalyst/vis_settings.hpp"
+
+namespace fs = std::filesystem;
+
+namespace psph {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+InSituSession::InSituSession(const Case& c, const std::vector<std::string>& cli, const std::string& live)
+    : live_(live) {
+  std::vector<std::string> names = c.visualisation.pipelines;
+  names.insert(names.end(), cli.begin(), cli.end());
+  if (names.empty() && !live.empty()) names.push_back("live");
+  if (!live.empty() && live.find(':') == std::string::npos)
+    throw std::invalid_argument("--live " + live + ": expected HOST:PORT (ParaView's Catalyst > Connect, default port 22222)");
+  for (const std::string& n : names) {
+    const bool from_case = std::find(cli.begin(), cli.end(), n) == cli.end();
+    const PipelineScript s = find_pipeline(n, from_case ? c.file + ": visualisation.pipelines: " + n : "");
+    if (std::any_of(scripts_.begin(), scripts_.end(), [&](const PipelineScript& p) { return p.path == s.path; })) continue;
+    for (const auto& f : s.fields)
+      if (std::find(fields_.begin(), fields_.end(), f) == fields_.end()) fields_.push_back(f);
+    scripts_.push_back(s);
+  }
+  if (!scripts_.empty() && !insitu_available()) {
+    // Asked for on the command line: an error. Only in the case file: the run goes on without.
+    if (!cli.empty() || !live.empty()) make_insitu({});  // throws InSituUnavailable with the reason
+    scripts_.clear(), fields_.clear();
+    note_ = "note: this poresph was built without ParaView Catalyst; the case's visualisation.pipelines are skipped";
+  }
+}
+
+InSituSession::~InSituSession() = default;
+
+void InSituSession::start(Engine& e, const Case& c, const std::string& run_dir,
+                          const std::function<void(const std::string&)>& log) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<std::string> missing = stage_frame(e, fields_, frame_);
+  staging_s_ += seconds_since(t0);
+  for (const auto& m : missing) log("note: no field '" + m + "' in this case (its physics is not active); pipelines go without it");
+  const fs::path run = fs::absolute(run_dir);
+  nlohmann::json settings = resolve_vis_settings(c, frame_, (run / "images").string(), (run / "extracts").string(), live_);
+  std::vector<std::string> paths;
+  for (const auto& s : scripts_) paths.push_back(s.path);
+  settings["pipelines"] = paths;
+  fs::create_directories(run / "images");
+  const fs::path file = run / "images" / "visualisation.json";
+  std::ofstream(file) << settings.dump(2) << "\n";
+  InSituConfig cfg;
+  cfg.scripts = paths;
+  cfg.settings_file = file.string();
+  cfg.live_url = live_;
+  insitu_ = make_insitu(cfg);
+  std::string names;
+  for (const auto& s : scripts_) names += (names.empty() ? "" : ", ") + s.name;
+  log("pipelines: " + names + " (" + insitu_->note() + ")");
+  if (!live_.empty()) log("ParaView Live: connecting to " + live_ + " at each output step; the run carries on without it");
+  const auto t1 = std::chrono::steady_clock::now();
+  insitu_->execute(frame_, frames_++, e.time());
+  coprocess_s_ += seconds_since(t1);
+  last_step_ = e.steps();
+}
+
+void InSituSession::output(Engine& e) {
+  if (!insitu_ || e.steps() == last_step_) return;
+  const auto t0 = std::chrono::steady_clock::now();
+  stage_frame(e, fields_, frame_);
+  const auto t1 = std::chrono::steady_clock::now();
+  insitu_->execute(frame_, frames_++, e.time());
+  staging_s_ += std::chrono::duration<double>(t1 - t0).count();
+  coprocess_s_ += seconds_since(t1);
+  last_step_ = e.steps();
+}
+
+void InSituSession::finish() {
+  if (insitu_) insitu_->finalise();
+}
+
+nlohmann::json InSituSession::stats() const {
+  return {{"frames", frames_}, {"staging_seconds", staging_s_}, {"coprocess_seconds", coprocess_s_}};
+}
+
+}  // namespace psph

@@ -1,0 +1,15 @@
+#pragma once
+// Fills a ParticleFrame from an engine: on output steps only, exactly the fields asked for.
+#include <string>
+#include <vector>
+
+#include "catalyst/particle_frame.hpp"
+#include "engine/engine.hpp"
+
+namespace psph {
+
+// Copies positions and `fields` (registered or derived) into `frame` as float, vectors of D
+// components padded to 3. Returns the names the engine does not have (those are left out).
+std::vector<std::string> stage_frame(Engine& e, const std::vector<std::string>& fields, ParticleFrame& frame);
+
+}  // namespace psph

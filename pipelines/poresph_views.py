@@ -1,0 +1,165 @@
+"""Shared building blocks of the poresph Catalyst pipelines (ParaView 5.11, script version 2).
+
+Every pipeline shows the channel "particles" in two views, a 3D view and a cross-section slab
+(particles within `slab.half_thickness` of a plane, as in the references' cross-section
+figures), and writes one PNG per output step and view into images/<pipeline>/. The settings
+(camera, slab, colour maps and fixed colour ranges, folders) come from the JSON file named by
+$PORESPH_VIS_SETTINGS, which poresph resolves from the case file at the first output step.
+"""
+import json
+import os
+
+from paraview import catalyst
+from paraview.simple import (Calculator, ColorBy, CreateExtractor, CreateView, ExtractSurface,
+                             GetColorTransferFunction, GetScalarBar, Show, Threshold,
+                             TrivialProducer)
+
+_state = {"live_taken": False, "slab_extract_taken": False}
+
+# The `phase` field (solver/state/derived_fields.hpp): value, label, colour.
+PHASES = [(0, "wall", [0.55, 0.55, 0.55]), (1, "water", [0.12, 0.47, 0.85]), (2, "gas", [0.98, 0.85, 0.25]),
+          (3, "solid", [0.62, 0.42, 0.25]), (4, "rigid", [0.2, 0.2, 0.2])]
+
+
+def settings():
+    path = os.environ.get("PORESPH_VIS_SETTINGS")
+    if not path:
+        raise RuntimeError("PORESPH_VIS_SETTINGS is not set: poresph names its visualisation settings file there")
+    with open(path) as f:
+        return json.load(f)
+
+
+def _camera(view, cam):
+    view.CameraPosition = cam["position"]
+    view.CameraFocalPoint = cam["focal_point"]
+    view.CameraViewUp = cam["view_up"]
+    view.CameraViewAngle = cam.get("view_angle", 30.0)
+    if cam.get("parallel_scale"):
+        view.CameraParallelProjection = 1
+        view.CameraParallelScale = cam["parallel_scale"]
+
+
+def _view(s, cam):
+    v = CreateView("RenderView")
+    v.ViewSize = s["image_size"]
+    v.OrientationAxesVisibility = 0
+    v.UseFXAA = 0  # deterministic images for the regression tests
+    v.Background = [1.0, 1.0, 1.0]
+    v.UseColorPaletteForBackground = 0
+    _camera(v, cam)
+    return v
+
+
+def _particles_display(source, view, s):
+    d = Show(source, view)
+    d.SetRepresentationType("Point Gaussian")
+    d.ShaderPreset = "Sphere"
+    d.GaussianRadius = s["point_radius"]
+    return d
+
+
+def _lut(field, s, categorical=None, above_range=None):
+    lut = GetColorTransferFunction(field)
+    lut.AutomaticRescaleRangeMode = "Never"  # ranges stay fixed over a run
+    if categorical:
+        lut.InterpretValuesAsCategories = 1
+        lut.Annotations = [str(x) for pair in categorical for x in (pair[0], pair[1])]
+        lut.IndexedColors = [c for pair in categorical for c in pair[2]]
+        return lut
+    lut.ApplyPreset(s["colour_maps"].get(field, "Viridis (matplotlib)"), True)
+    lo, hi = s["ranges"][field]
+    lut.RescaleTransferFunction(lo, hi)
+    if above_range:
+        lut.UseAboveRangeColor = 1
+        lut.AboveRangeColor = above_range
+    return lut
+
+
+def _colour(display, view, field, component, lut, s):
+    if field not in display.Input.PointData.keys():
+        # The case has no such field (its physics is not active): plain grey particles.
+        ColorBy(display, None)
+        display.AmbientColor = display.DiffuseColor = [0.7, 0.7, 0.7]
+        return
+    if component is None:
+        ColorBy(display, ("POINTS", field))
+    else:
+        ColorBy(display, ("POINTS", field, component))
+        lut.VectorMode = "Component"
+        lut.VectorComponent = {"X": 0, "Y": 1, "Z": 2}[component]
+    display.LookupTable = lut
+    if field in s["ranges"]:  # again: ColorBy may have rescaled to the data
+        lut.AutomaticRescaleRangeMode = "Never"
+        lut.RescaleTransferFunction(*s["ranges"][field])
+    if s.get("scalar_bar", True):
+        display.SetScalarBarVisibility(view, True)
+        bar = GetScalarBar(lut, view)
+        bar.Title = s.get("titles", {}).get(field, field)
+        bar.ComponentTitle = ""
+
+
+def _png(view, name, prefix, s):
+    png = CreateExtractor("PNG", view, registrationName="%s_%s_png" % (name, prefix))
+    png.Writer.FileName = prefix + "_{timestep:06d}.png"
+    png.Writer.ImageResolution = s["image_size"]
+    png.Writer.OverrideColorPalette = ""
+    return png
+
+
+def slab(source, s):
+    """Particles within slab.half_thickness of the slab plane."""
+    o, n, h = s["slab"]["origin"], s["slab"]["normal"], s["slab"]["half_thickness"]
+    dist = Calculator(registrationName="slab_distance", Input=source)
+    dist.ResultArrayName = "slab_distance"
+    dist.Function = "abs((coordsX-(%r))*(%r)+(coordsY-(%r))*(%r)+(coordsZ-(%r))*(%r))" % (
+        o[0], n[0], o[1], n[1], o[2], n[2])
+    cut = Threshold(registrationName="slab", Input=dist)
+    cut.Scalars = ["POINTS", "slab_distance"]
+    cut.LowerThreshold = 0.0
+    cut.UpperThreshold = h
+    cut.ThresholdMethod = "Between"
+    return cut
+
+
+def field_pipeline(name, field, component=None, categorical=None, above_range=None):
+    """A pipeline colouring the particles by `field` (a component of it when given) in a 3D view
+    and a slab view. `categorical`: [(value, label, [r, g, b]), ...] for an indexed colour map.
+    Returns the catalyst Options the script must expose as `options`."""
+    s = settings()
+    particles = TrivialProducer(registrationName="particles")
+    lut = _lut(field, s, categorical, above_range)
+    shown = particles
+    if not s.get("show_walls", False) and "phase" in particles.PointData.keys():
+        # Walls would hide the inside of a closed domain in 3D; the slab shows them.
+        shown = Threshold(registrationName="not_walls", Input=particles)
+        shown.Scalars = ["POINTS", "phase"]
+        shown.LowerThreshold = 0.5
+        shown.UpperThreshold = 100.0
+        shown.ThresholdMethod = "Between"
+    views = [("3d", shown, s["camera"])]
+    if s["dimension"] == 3:
+        views.append(("slab", slab(particles, s), s["slab"]["camera"]))
+    for prefix, source, cam in views:
+        view = _view(s, cam)
+        _colour(_particles_display(source, view, s), view, field, component, lut, s)
+        _png(view, name, prefix, s)
+    if s["dimension"] == 3 and s.get("slab_extract", True) and not _state["slab_extract_taken"]:
+        _state["slab_extract_taken"] = True  # one slab extract per run, whichever pipeline comes first
+        vtp = CreateExtractor("VTP", ExtractSurface(Input=views[1][1]), registrationName="slab_vtp")
+        vtp.Writer.FileName = os.path.join(s["extracts_dir"], "slab_{timestep:06d}.pvtp")
+
+    return live_options(s, os.path.join(s["images_dir"], name))
+
+
+def live_options(s=None, folder=None):
+    """Catalyst options: every call is an output step (poresph decides when), images under
+    images/, and ParaView Live on the first pipeline when the run was given --live."""
+    s = s or settings()
+    options = catalyst.Options()
+    options.ExtractsOutputDirectory = folder or s["images_dir"]
+    options.GlobalTrigger.Frequency = 1
+    if s.get("live_url") and not _state["live_taken"]:
+        _state["live_taken"] = True  # one Live connection per run
+        options.EnableCatalystLive = 1
+        options.CatalystLiveURL = s["live_url"]
+    return options

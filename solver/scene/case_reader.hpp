@@ -1,0 +1,172 @@
+#pragma once
+// Strict reader of one case-file table: each key is consumed as it is read; what is left over is
+// an unknown key and rejected. Every error names the file, the dotted key and what was expected.
+#include <array>
+#include <cmath>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "scene/case_file.hpp"
+
+namespace psph {
+
+inline std::string toml_line_of(const toml::node& n) {
+  const auto& src = n.source();
+  return src.begin.line ? " (line " + std::to_string(src.begin.line) + ")" : "";
+}
+
+// Reads one table and remembers which keys were used.
+class CaseReader {
+ public:
+  CaseReader(const toml::table& t, std::string file, std::string path)
+      : t_(t), file_(std::move(file)), path_(std::move(path)) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& expected, const toml::node* n = nullptr) const {
+    throw CaseError(file_ + ": " + qualified(key) + (n ? toml_line_of(*n) : "") + ": " + expected);
+  }
+  std::string qualified(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+  const toml::node* node(const std::string& key) {
+    used_.insert(key);
+    return t_.get(key);
+  }
+  bool has(const std::string& key) const { return t_.contains(key); }
+
+  double number(const std::string& key, std::optional<double> def = std::nullopt) {
+    const toml::node* n = node(key);
+    if (!n) {
+      if (def) return *def;
+      fail(key, "missing required value (expected a number)");
+    }
+    if (auto v = n->value<double>()) return *v;  // integers convert too
+    fail(key, std::string("expected a number, got ") + type_name(*n), n);
+  }
+  double positive(const std::string& key, std::optional<double> def = std::nullopt) {
+    const double v = number(key, def);
+    if (!(v > 0) || !std::isfinite(v)) fail(key, "expected a number > 0, got " + fmt(v), node(key));
+    return v;
+  }
+  double non_negative(const std::string& key, std::optional<double> def = std::nullopt) {
+    const double v = number(key, def);
+    if (!(v >= 0) || !std::isfinite(v)) fail(key, "expected a number >= 0, got " + fmt(v), node(key));
+    return v;
+  }
+  long integer(const std::string& key, std::optional<long> def = std::nullopt) {
+    const toml::node* n = node(key);
+    if (!n) {
+      if (def) return *def;
+      fail(key, "missing required value (expected an integer)");
+    }
+    if (auto v = n->value_exact<int64_t>()) return static_cast<long>(*v);
+    fail(key, std::string("expected an integer, got ") + type_name(*n), n);
+  }
+  long positive_integer(const std::string& key, long def) {
+    const long v = integer(key, def);
+    if (v < 1) fail(key, "expected an integer >= 1, got " + std::to_string(v), node(key));
+    return v;
+  }
+  std::string string(const std::string& key, std::optional<std::string> def = std::nullopt) {
+    const toml::node* n = node(key);
+    if (!n) {
+      if (def) return *def;
+      fail(key, "missing required value (expected a string)");
+    }
+    if (auto v = n->value_exact<std::string>()) return *v;
+    fail(key, std::string("expected a string, got ") + type_name(*n), n);
+  }
+  std::string choice(const std::string& key, const std::vector<std::string>& options,
+                     std::optional<std::string> def = std::nullopt) {
+    const std::string v = string(key, def);
+    for (const auto& o : options)
+      if (o == v) return v;
+    std::string list;
+    for (const auto& o : options) list += (list.empty() ? "" : ", ") + ("\"" + o + "\"");
+    fail(key, "expected one of " + list + ", got \"" + v + "\"", node(key));
+  }
+  bool boolean(const std::string& key, bool def) {
+    const toml::node* n = node(key);
+    if (!n) return def;
+    if (auto v = n->value_exact<bool>()) return *v;
+    fail(key, std::string("expected true or false, got ") + type_name(*n), n);
+  }
+  // An array of exactly `dim` numbers (or booleans when `T` is bool).
+  template <class T>
+  std::array<T, 3> vec(const std::string& key, int dim, std::optional<std::array<T, 3>> def = std::nullopt) {
+    const toml::node* n = node(key);
+    const char* what = std::is_same_v<T, bool> ? "booleans" : "numbers";
+    if (!n) {
+      if (def) return *def;
+      fail(key, "missing required value (expected an array of " + std::to_string(dim) + " " + what + ")");
+    }
+    const toml::array* arr = n->as_array();
+    if (!arr || static_cast<int>(arr->size()) != dim)
+      fail(key, "expected an array of " + std::to_string(dim) + " " + what + " (one per dimension)", n);
+    std::array<T, 3> out{};
+    for (int k = 0; k < dim; ++k) {
+      std::optional<T> v;
+      if constexpr (std::is_same_v<T, bool>) v = (*arr)[k].value_exact<bool>();
+      else v = (*arr)[k].value<T>();
+      if (!v) fail(key, "expected an array of " + std::to_string(dim) + " " + what, n);
+      out[k] = *v;
+    }
+    return out;
+  }
+  std::vector<std::string> strings(const std::string& key, std::vector<std::string> def) {
+    const toml::node* n = node(key);
+    if (!n) return def;
+    const toml::array* arr = n->as_array();
+    if (!arr) fail(key, "expected an array of strings", n);
+    std::vector<std::string> out;
+    for (const auto& e : *arr) {
+      auto v = e.value_exact<std::string>();
+      if (!v) fail(key, "expected an array of strings", n);
+      out.push_back(*v);
+    }
+    return out;
+  }
+  const toml::table& table(const std::string& key, bool required) {
+    const toml::node* n = node(key);
+    static const toml::table empty;
+    if (!n) {
+      if (required) fail(key, "missing required table [" + qualified(key) + "]");
+      return empty;
+    }
+    if (!n->is_table()) fail(key, "expected a table", n);
+    return *n->as_table();
+  }
+  // Rejects every key that was not read.
+  void finish() const {
+    for (const auto& [k, v] : t_) {
+      const std::string key(k.str());
+      if (!used_.count(key)) fail(key, "unknown key", &v);
+    }
+  }
+
+  static const char* type_name(const toml::node& n) {
+    switch (n.type()) {
+      case toml::node_type::string: return "a string";
+      case toml::node_type::integer: return "an integer";
+      case toml::node_type::floating_point: return "a number";
+      case toml::node_type::boolean: return "a boolean";
+      case toml::node_type::array: return "an array";
+      case toml::node_type::table: return "a table";
+      default: return "a date or time";
+    }
+  }
+  static std::string fmt(double v) {
+    std::ostringstream o;
+    o << v;
+    return o.str();
+  }
+
+ private:
+  const toml::table& t_;
+  std::string file_, path_;
+  std::set<std::string> used_;
+};
+
+}  // namespace psph

@@ -1,0 +1,95 @@
+# End to end: the solver runs a short dam break with two Catalyst pipelines, headless (its own
+# Xvfb); images, settings, extracts and the in-situ timing must be there, the extracts must hold
+# the solver's values, `figures` must re-render the sequence from the extracts, and --live with
+# nobody listening must not stop the run.
+cmake_minimum_required(VERSION 3.24)
+
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+file(READ ${SRC}/cases/dam_break_3d.toml text)
+string(REPLACE "end = 20.0" "end = 0.02" text "${text}")
+string(REPLACE "extract_interval = 0.25" "extract_interval = 0.005" text "${text}")
+string(APPEND text "\n[visualisation]\npipelines = [\"phases\"]\ninterval = 0.005\nimage_size = [320, 240]\n")
+file(WRITE ${WORK}/db.toml "${text}")
+
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY ${PORESPH} run ${WORK}/db.toml --out ${WORK}/run
+                        --pipeline pressure --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT (rc EQUAL 0))
+  message(FATAL_ERROR "run with pipelines failed (${rc}): ${out} ${err}")
+endif()
+file(READ ${WORK}/run/log.txt log)
+if(NOT (log MATCHES "started Xvfb on :[0-9]+"))
+  message(FATAL_ERROR "no own Xvfb without a display: ${log}")
+endif()
+foreach(p phases pressure)
+  foreach(v 3d slab)
+    foreach(k 000000 000004)
+      if(NOT (EXISTS ${WORK}/run/images/${p}/${v}_${k}.png))
+        message(FATAL_ERROR "missing images/${p}/${v}_${k}.png")
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+if(NOT (EXISTS ${WORK}/run/images/visualisation.json))
+  message(FATAL_ERROR "missing images/visualisation.json")
+endif()
+if(NOT (EXISTS ${WORK}/run/extracts/slab_000004.pvtp))
+  message(FATAL_ERROR "missing the slab extract")
+endif()
+file(READ ${WORK}/run/summary.json summary)
+string(JSON frames GET "${summary}" insitu frames)
+if(NOT (frames EQUAL 5))
+  message(FATAL_ERROR "expected 5 in-situ frames (0, 0.005, ..., 0.02 s), summary says ${frames}")
+endif()
+file(GLOB vtps ${WORK}/run/extracts/particles_*.vtp)
+list(LENGTH vtps n)
+if(NOT (n EQUAL 5))
+  message(FATAL_ERROR "expected an extract per frame, found ${n}")
+endif()
+
+execute_process(COMMAND ${CHECK_EXTRACT} ${WORK}/db.toml ${WORK}/run 0.005 pressure phase velocity
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT (rc EQUAL 0))
+  message(FATAL_ERROR "the extract does not hold the solver's state: ${out} ${err}")
+endif()
+
+# figures: the same pictures again, from the extracts, by pvbatch.
+file(RENAME ${WORK}/run/images/pressure/3d_000004.png ${WORK}/insitu_3d_000004.png)
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY ${PORESPH} figures ${WORK}/run --pipeline pressure
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT (rc EQUAL 0))
+  message(FATAL_ERROR "figures failed (${rc}): ${out} ${err}")
+endif()
+if(NOT (EXISTS ${WORK}/run/images/pressure/3d_000004.png))
+  message(FATAL_ERROR "figures did not re-render frame 4")
+endif()
+execute_process(COMMAND ${IMAGE_DIFF} ${WORK}/run/images/pressure/3d_000004.png ${WORK}/insitu_3d_000004.png ${WORK}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT (rc EQUAL 0))
+  message(FATAL_ERROR "figures' re-render differs from the in-situ image: ${out}")
+endif()
+if(FFMPEG)
+  if(NOT (EXISTS ${WORK}/run/images/pressure/3d.mp4))
+    message(FATAL_ERROR "figures assembled no MP4 though ffmpeg is installed: ${err}")
+  endif()
+endif()
+
+# Live with nobody listening: the run carries on.
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY ${PORESPH} run ${WORK}/db.toml --out ${WORK}/live
+                        --live localhost:1 --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT (rc EQUAL 0))
+  message(FATAL_ERROR "a run with --live and no ParaView listening failed (${rc}): ${err}")
+endif()
+
+# Bad pipeline names: exit 2, no run directory.
+execute_process(COMMAND ${PORESPH} run ${WORK}/db.toml --out ${WORK}/bad --pipeline nosuch
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT (rc EQUAL 2))
+  message(FATAL_ERROR "an unknown pipeline was not rejected: ${rc}")
+endif()
+if(NOT (err MATCHES "--pipeline nosuch: no such pipeline"))
+  message(FATAL_ERROR "unclear message: ${err}")
+endif()
+if(NOT (NOT EXISTS ${WORK}/bad))
+  message(FATAL_ERROR "a run directory was left behind")
+endif()
