@@ -3,7 +3,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -32,18 +31,6 @@ int run_program(const std::vector<std::string>& args) {
   int status = 0;
   if (pid < 0 || waitpid(pid, &status, 0) < 0) return 127;
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-}
-
-bool have_program(const std::string& name) {
-  const char* path = std::getenv("PATH");
-  std::string p = path ? path : "";
-  std::size_t start = 0;
-  while (start <= p.size()) {
-    const std::size_t end = std::min(p.find(':', start), p.size());
-    if (access((p.substr(start, end - start) + "/" + name).c_str(), X_OK) == 0) return true;
-    start = end + 1;
-  }
-  return false;
 }
 
 }  // namespace
@@ -116,10 +103,6 @@ int render_figures(const std::string& run_dir, const std::vector<std::string>& r
   fs::remove_all(work);
 
   // One MP4 per pipeline and view, when ffmpeg is installed.
-  if (!have_program("ffmpeg")) {
-    log << "figures: ffmpeg not found, no MP4 assembled (apt-get install ffmpeg)\n";
-    return 0;
-  }
   for (const std::string& s : scripts) {
     const fs::path dir = run / "images" / fs::path(s).stem();
     for (const char* view : {"3d", "slab"}) {
@@ -128,6 +111,10 @@ int render_figures(const std::string& run_dir, const std::vector<std::string>& r
       const int rc = run_program({"ffmpeg", "-y", "-loglevel", "error", "-framerate", "10", "-i",
                                   (dir / (std::string(view) + "_%06d.png")).string(), "-c:v", "libx264", "-pix_fmt",
                                   "yuv420p", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", mp4});
+      if (rc == 127) {
+        log << "figures: ffmpeg not found, no MP4 assembled (apt-get install ffmpeg)\n";
+        return 0;
+      }
       log << "figures: " << (rc == 0 ? "wrote " + mp4 : "ffmpeg failed for " + mp4) << "\n";
     }
   }

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "catalyst/particle_frame.hpp"
+#include "io/particle_frame.hpp"
 
 namespace psph {
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "catalyst/staging.hpp"
+#include "io/field_staging.hpp"
 #include "catalyst/vis_settings.hpp"
 
 namespace fs = std::filesystem;
@@ -44,12 +44,23 @@ InSituSession::InSituSession(const Case& c, const std::vector<std::string>& cli,
 
 InSituSession::~InSituSession() = default;
 
+std::vector<std::string> InSituSession::stage(Engine& e) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<std::string> missing = stage_frame(e, fields_, frame_);
+  staging_s_ += seconds_since(t0);
+  return missing;
+}
+
+void InSituSession::hand_over(Engine& e) {
+  const auto t0 = std::chrono::steady_clock::now();
+  insitu_->execute(frame_, frames_++, e.time());
+  coprocess_s_ += seconds_since(t0);
+  last_step_ = e.steps();
+}
+
 void InSituSession::start(Engine& e, const Case& c, const std::string& run_dir,
                           const std::function<void(const std::string&)>& log) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const std::vector<std::string> missing = stage_frame(e, fields_, frame_);
-  staging_s_ += seconds_since(t0);
-  for (const auto& m : missing) log("note: no field '" + m + "' in this case (its physics is not active); pipelines go without it");
+  for (const auto& m : stage(e)) log("note: no field '" + m + "' in this case (its physics is not active); pipelines go without it");
   const fs::path run = fs::absolute(run_dir);
   nlohmann::json settings = resolve_vis_settings(c, frame_, (run / "images").string(), (run / "extracts").string(), live_);
   std::vector<std::string> paths;
@@ -58,30 +69,18 @@ void InSituSession::start(Engine& e, const Case& c, const std::string& run_dir,
   fs::create_directories(run / "images");
   const fs::path file = run / "images" / "visualisation.json";
   std::ofstream(file) << settings.dump(2) << "\n";
-  InSituConfig cfg;
-  cfg.scripts = paths;
-  cfg.settings_file = file.string();
-  cfg.live_url = live_;
-  insitu_ = make_insitu(cfg);
+  insitu_ = make_insitu({paths, file.string(), live_});
   std::string names;
   for (const auto& s : scripts_) names += (names.empty() ? "" : ", ") + s.name;
   log("pipelines: " + names + " (" + insitu_->note() + ")");
   if (!live_.empty()) log("ParaView Live: connecting to " + live_ + " at each output step; the run carries on without it");
-  const auto t1 = std::chrono::steady_clock::now();
-  insitu_->execute(frame_, frames_++, e.time());
-  coprocess_s_ += seconds_since(t1);
-  last_step_ = e.steps();
+  hand_over(e);
 }
 
 void InSituSession::output(Engine& e) {
   if (!insitu_ || e.steps() == last_step_) return;
-  const auto t0 = std::chrono::steady_clock::now();
-  stage_frame(e, fields_, frame_);
-  const auto t1 = std::chrono::steady_clock::now();
-  insitu_->execute(frame_, frames_++, e.time());
-  staging_s_ += std::chrono::duration<double>(t1 - t0).count();
-  coprocess_s_ += seconds_since(t1);
-  last_step_ = e.steps();
+  stage(e);
+  hand_over(e);
 }
 
 void InSituSession::finish() {

@@ -39,6 +39,9 @@ class InSituSession {
   nlohmann::json stats() const;
 
  private:
+  std::vector<std::string> stage(Engine& e);  // timed; returns the fields the engine lacks
+  void hand_over(Engine& e);                  // timed execute of the staged frame
+
   std::vector<PipelineScript> scripts_;
   std::vector<std::string> fields_;
   std::string live_, note_;

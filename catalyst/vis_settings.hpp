@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "catalyst/particle_frame.hpp"
+#include "io/particle_frame.hpp"
 #include "scene/case_file.hpp"
 
 namespace psph {

@@ -1,20 +1,17 @@
 #include "io/particle_output.hpp"
 
+#include "io/field_staging.hpp"
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
 #if defined(PORESPH_HAVE_VTK)
-#include <vtkCellArray.h>
-#include <vtkDoubleArray.h>
-#include <vtkFloatArray.h>
-#include <vtkIntArray.h>
 #include <vtkNew.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
 #include <vtkXMLPolyDataWriter.h>
+
+#include "io/particle_polydata.hpp"
 #endif
 
 namespace psph {
@@ -35,39 +32,12 @@ std::string ParticleWriter::write(Engine& e) {
   std::snprintf(name, sizeof name, "particles_%06zu.vtp", written_.size());
   const std::string path = dir_ + "/" + name;
 #if defined(PORESPH_HAVE_VTK)
-  const int D = e.dimension();
-  const int n = e.particles();
-  const std::vector<double> x = e.field("position");
-  vtkNew<vtkPoints> pts;
-  pts->SetDataTypeToDouble();
-  pts->SetNumberOfPoints(n);
-  for (int i = 0; i < n; ++i) {
-    double p[3] = {0, 0, 0};
-    for (int k = 0; k < D; ++k) p[k] = x[static_cast<std::size_t>(i) * D + k];
-    pts->SetPoint(i, p);
-  }
-  vtkNew<vtkPolyData> poly;
-  poly->SetPoints(pts);
-  vtkNew<vtkCellArray> verts;
-  for (vtkIdType i = 0; i < n; ++i) verts->InsertNextCell(1, &i);
-  poly->SetVerts(verts);
-  for (const std::string& f : fields_) {
-    const std::vector<double> v = e.field(f);
-    const int comps = static_cast<int>(n > 0 ? v.size() / n : 1);
-    vtkNew<vtkFloatArray> arr;
-    arr->SetName(f.c_str());
-    // Vectors are written with 3 components so that ParaView glyphs and streamlines work in 2D.
-    const int out_comps = comps == D && D > 1 ? 3 : comps;
-    arr->SetNumberOfComponents(out_comps);
-    arr->SetNumberOfTuples(n);
-    for (int i = 0; i < n; ++i)
-      for (int k = 0; k < out_comps; ++k)
-        arr->SetComponent(i, k, k < comps ? static_cast<float>(v[static_cast<std::size_t>(i) * comps + k]) : 0.f);
-    poly->GetPointData()->AddArray(arr);
-  }
+  const std::vector<std::string> missing = stage_frame(e, fields_, frame_);
+  if (!missing.empty()) throw std::runtime_error("output.fields: no particle field '" + missing.front() + "'");
+  ParticlePolyData poly;
   vtkNew<vtkXMLPolyDataWriter> w;
   w->SetFileName(path.c_str());
-  w->SetInputData(poly);
+  w->SetInputData(poly.wrap(frame_));
   w->SetDataModeToAppended();
   w->SetCompressorTypeToZLib();
   if (w->Write() != 1) throw std::runtime_error(path + ": VTK could not write the extract");

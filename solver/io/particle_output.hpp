@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "engine/engine.hpp"
+#include "io/particle_frame.hpp"
 
 namespace psph {
 
@@ -21,6 +22,7 @@ class ParticleWriter {
  private:
   std::string dir_;
   std::vector<std::string> fields_;
+  ParticleFrame frame_;  // staging buffers, reused from extract to extract
   std::vector<std::pair<double, std::string>> written_;
 };
 

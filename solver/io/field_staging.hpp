@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "catalyst/particle_frame.hpp"
+#include "io/particle_frame.hpp"
 #include "engine/engine.hpp"
 
 namespace psph {

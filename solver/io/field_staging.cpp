@@ -1,4 +1,4 @@
-#include "catalyst/staging.hpp"
+#include "io/field_staging.hpp"
 
 #include <algorithm>
 

@@ -1,0 +1,49 @@
+#include "io/particle_polydata.hpp"
+
+#include <stdexcept>
+
+#include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+
+namespace psph {
+namespace {
+
+vtkSmartPointer<vtkFloatArray> wrap_array(const std::vector<float>& v, int comps, const std::string& name) {
+  auto a = vtkSmartPointer<vtkFloatArray>::New();
+  a->SetName(name.c_str());
+  a->SetNumberOfComponents(comps);
+  a->SetArray(const_cast<float*>(v.data()), static_cast<vtkIdType>(v.size()), 1);  // save = 1: not owned
+  return a;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkPolyData> ParticlePolyData::wrap(const ParticleFrame& f) {
+  if (f.position.size() != 3 * static_cast<std::size_t>(f.n)) throw std::logic_error("frame positions are not 3 n");
+  if (f.n != verts_n_) {
+    vtkNew<vtkIdTypeArray> offsets, conn;
+    offsets->SetNumberOfValues(f.n + 1);
+    conn->SetNumberOfValues(f.n);
+    for (vtkIdType i = 0; i <= f.n; ++i) offsets->SetValue(i, i);
+    for (vtkIdType i = 0; i < f.n; ++i) conn->SetValue(i, i);
+    verts_ = vtkSmartPointer<vtkCellArray>::New();
+    verts_->SetData(offsets, conn);
+    verts_n_ = f.n;
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> pts;
+  pts->SetData(wrap_array(f.position, 3, "position"));
+  poly->SetPoints(pts);
+  poly->SetVerts(verts_);
+  for (const StagedField& s : f.fields) {
+    if (s.data.size() != static_cast<std::size_t>(f.n) * s.components)
+      throw std::logic_error("staged field '" + s.name + "' has the wrong size");
+    poly->GetPointData()->AddArray(wrap_array(s.data, s.components, s.name));
+  }
+  return poly;
+}
+
+}  // namespace psph
