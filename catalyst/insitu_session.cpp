@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -69,12 +70,15 @@ void InSituSession::start(Engine& e, const Case& c, const std::string& run_dir,
   fs::create_directories(run / "images");
   const fs::path file = run / "images" / "visualisation.json";
   std::ofstream(file) << settings.dump(2) << "\n";
+  const auto t0 = std::chrono::steady_clock::now();
   insitu_ = make_insitu({paths, file.string(), live_});
+  startup_s_ = seconds_since(t0);
   std::string names;
   for (const auto& s : scripts_) names += (names.empty() ? "" : ", ") + s.name;
   log("pipelines: " + names + " (" + insitu_->note() + ")");
   if (!live_.empty()) log("ParaView Live: connecting to " + live_ + " at each output step; the run carries on without it");
   hand_over(e);
+  first_frame_s_ = coprocess_s_;
 }
 
 void InSituSession::output(Engine& e) {
@@ -87,8 +91,24 @@ void InSituSession::finish() {
   if (insitu_) insitu_->finalise();
 }
 
-nlohmann::json InSituSession::stats() const {
-  return {{"frames", frames_}, {"staging_seconds", staging_s_}, {"coprocess_seconds", coprocess_s_}};
+nlohmann::json InSituSession::stats(double wall) const {
+  return {{"frames", frames_},
+          {"startup_seconds", startup_s_},
+          {"first_frame_seconds", first_frame_s_},
+          {"staging_seconds", staging_s_},
+          {"coprocess_seconds", coprocess_s_},
+          {"share_of_wall_time", (startup_s_ + staging_s_ + coprocess_s_) / std::max(wall, 1e-9)}};
+}
+
+std::string InSituSession::report(double wall) const {
+  const double later = frames_ > 1 ? (coprocess_s_ - first_frame_s_) / double(frames_ - 1) : 0;
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "in situ: %ld frames; start-up %.3g s, first frame %.3g s, then %.3g s per frame; staging %.3g ms "
+                "per frame; %.1f %% of the wall time",
+                frames_, startup_s_, first_frame_s_, later, 1e3 * staging_s_ / std::max<long>(frames_, 1),
+                100 * stats(wall)["share_of_wall_time"].get<double>());
+  return line;
 }
 
 }  // namespace psph

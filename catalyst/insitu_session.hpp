@@ -35,8 +35,10 @@ class InSituSession {
   void output(Engine& e);
   void finish();
   long last_step() const { return last_step_; }
-  // Frames, seconds spent staging and in CoProcess.
-  nlohmann::json stats() const;
+  // Frames; seconds spent starting Catalyst (display, Python, pipeline scripts), in the first
+  // CoProcess (builds the pipelines), in all CoProcess calls and staging; their share of `wall`.
+  nlohmann::json stats(double wall) const;
+  std::string report(double wall) const;  // the same in one log line
 
  private:
   std::vector<std::string> stage(Engine& e);  // timed; returns the fields the engine lacks
@@ -48,7 +50,7 @@ class InSituSession {
   std::unique_ptr<InSitu> insitu_;
   ParticleFrame frame_;
   long frames_ = 0, last_step_ = -1;
-  double staging_s_ = 0, coprocess_s_ = 0;
+  double startup_s_ = 0, first_frame_s_ = 0, staging_s_ = 0, coprocess_s_ = 0;
 };
 
 }  // namespace psph

@@ -3,12 +3,15 @@
 // whose arrays wrap the frame's host buffers (no copy).
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
 
+#include <vtkCallbackCommand.h>
 #include <vtkCPDataDescription.h>
 #include <vtkCPInputDataDescription.h>
 #include <vtkCPProcessor.h>
 #include <vtkCPPythonPipeline.h>
 #include <vtkNew.h>
+#include <vtkPythonInterpreter.h>
 #include <vtkSmartPointer.h>
 
 #include "catalyst/headless_display.hpp"
@@ -17,6 +20,35 @@
 
 namespace psph {
 namespace {
+
+// Catalyst reports a pipeline script that raises (on import or at an output step) only by printing
+// the Python traceback and carrying on. Its Python stderr is watched instead, so that a run that
+// asked for figures stops with the script's error rather than finish without them.
+class PythonErrors {
+ public:
+  PythonErrors() {
+    auto cb = vtkSmartPointer<vtkCallbackCommand>::New();
+    cb->SetClientData(this);
+    cb->SetCallback([](vtkObject*, unsigned long, void* self, void* text) {
+      if (text) static_cast<PythonErrors*>(self)->text_ += static_cast<const char*>(text);
+    });
+    interpreter_->AddObserver(vtkCommand::ErrorEvent, cb);
+  }
+  void raise_if_failed(const std::string& where) {
+    const auto tb = text_.find("Traceback (most recent call last)");
+    if (tb == std::string::npos) return text_.clear();  // warnings only
+    std::string last = text_.substr(tb);                // its last non-empty line names the error
+    while (!last.empty() && (last.back() == '\n' || last.back() == ' ')) last.pop_back();
+    last = last.substr(last.find_last_of('\n') + 1);
+    text_.clear();
+    throw std::runtime_error("a Catalyst pipeline script failed at " + where + ": " + last +
+                             " (traceback above)");
+  }
+
+ private:
+  vtkNew<vtkPythonInterpreter> interpreter_;  // an instance receives the interpreter's stderr events
+  std::string text_;
+};
 
 class LegacyCatalyst final : public InSitu {
  public:
@@ -30,6 +62,7 @@ class LegacyCatalyst final : public InSitu {
       if (!p) throw std::runtime_error(s + ": Catalyst could not load this pipeline script");
       processor_->AddPipeline(p);
     }
+    python_errors_.raise_if_failed("start-up");
   }
   ~LegacyCatalyst() override { finalise(); }
   std::string note() const override { return note_; }
@@ -39,9 +72,10 @@ class LegacyCatalyst final : public InSitu {
     dd->AddInput("particles");
     dd->SetTimeData(time, step);
     dd->ForceOutputOn();  // the solver decides the output steps
-    if (!processor_->RequestDataDescription(dd)) return;
+    processor_->RequestDataDescription(dd);
     dd->GetInputDescriptionByName("particles")->SetGrid(poly_.wrap(f));
     processor_->CoProcess(dd);
+    python_errors_.raise_if_failed("output " + std::to_string(step));
   }
 
   void finalise() override {
@@ -52,6 +86,7 @@ class LegacyCatalyst final : public InSitu {
 
  private:
   std::unique_ptr<HeadlessDisplay> display_;  // first member: outlives the processor
+  PythonErrors python_errors_;
   std::string note_;
   vtkNew<vtkCPProcessor> processor_;
   ParticlePolyData poly_;

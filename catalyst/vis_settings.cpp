@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "kernels/kernel.hpp"
+#include "state/derived_fields.hpp"
 
 namespace psph {
 namespace {
@@ -16,6 +17,19 @@ double norm(V3 a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 V3 unit(V3 a) {
   const double l = norm(a);
   return {a[0] / l, a[1] / l, a[2] / l};
+}
+
+V3 cross(V3 a, V3 b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+
+// Parallel projection of a width x height rectangle centred on the focal point, with a 5 % margin;
+// with a scalar bar, the scene moves left so that the right 20 % of the image stays free for it.
+void frame_parallel(CameraOptions& c, double width, double height, double aspect, bool scalar_bar) {
+  const double used = scalar_bar ? 0.8 : 1.0;
+  c.parallel_scale = 0.55 * std::max(height, width / (aspect * used));
+  const V3 right = unit(cross(add(c.focal_point, c.position, -1), c.view_up));
+  const double shift = (1 - used) * c.parallel_scale * aspect;  // half the freed width
+  c.focal_point = add(c.focal_point, right, shift);
+  c.position = add(c.position, right, shift);
 }
 
 nlohmann::json camera_json(const CameraOptions& c) {
@@ -50,9 +64,24 @@ std::array<double, 2> default_range(const std::string& name, const ParticleFrame
   }
   if (name == "principal_stress") return big > 0 ? std::array<double, 2>{-big, big} : std::array<double, 2>{-1.0, 1.0};
   // Pressure: at least the hydrostatic range, since a run often starts at rest with p ~ 0.
-  if (name == "pressure") return {std::min(lo, 0.0), std::max(hi, pressure_scale)};
+  // Round-off below zero (a fluid at rest) is not a range worth showing.
+  if (name == "pressure") {
+    const double top = std::max(hi, pressure_scale);
+    return {lo < -1e-3 * top ? lo : 0.0, top};
+  }
   if (hi > lo) return {lo, hi};
   return {lo - 1, hi + 1};
+}
+
+// Vertical extent of the water and gas particles plus one spacing (`fallback` without phases).
+double fluid_height(const ParticleFrame& f, int up, double spacing, double fallback) {
+  const StagedField* phase = f.find("phase");
+  if (!phase) return fallback;
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (int i = 0; i < f.n; ++i)
+    if (phase->data[i] == float(Phase::Water) || phase->data[i] == float(Phase::Gas))
+      lo = std::min<double>(lo, f.position[3 * i + up]), hi = std::max<double>(hi, f.position[3 * i + up]);
+  return hi >= lo ? hi - lo + spacing : fallback;
 }
 
 }  // namespace
@@ -78,6 +107,7 @@ nlohmann::json resolve_vis_settings(const Case& c, const ParticleFrame& first, c
   j["extracts_dir"] = extracts_dir;
   j["point_radius"] = v.point_radius > 0 ? v.point_radius : 0.5 * s.options.spacing;
   j["scalar_bar"] = v.scalar_bar;
+  j["time_label"] = v.time_label;
   j["live_url"] = live_url;
 
   // Default 3D camera: from the side of the longer horizontal extent, a little from above, the
@@ -95,7 +125,7 @@ nlohmann::json resolve_vis_settings(const Case& c, const ParticleFrame& first, c
       cam.position = add(centre, unit(dir), dist);
     } else {
       cam.position = add(centre, V3{0, 0, 1}, norm(extent));
-      cam.parallel_scale = 0.55 * std::max(extent[1], extent[0] / aspect);
+      frame_parallel(cam, extent[0], extent[1], aspect, v.scalar_bar);
     }
   }
   j["camera"] = camera_json(cam);
@@ -114,18 +144,20 @@ nlohmann::json resolve_vis_settings(const Case& c, const ParticleFrame& first, c
     const int vert = up_in_plane ? up : a;
     int horiz = 0;
     while (horiz == vert || std::fabs(n[horiz]) > 0.9) ++horiz;
-    sc.parallel_scale = 0.55 * std::max(extent[vert], extent[horiz] / aspect);
+    frame_parallel(sc, extent[horiz], extent[vert], aspect, v.scalar_bar);
   }
   j["slab"] = {{"origin", o},
                {"normal", n},
                {"half_thickness", v.slab_half_thickness > 0 ? v.slab_half_thickness : h},
                {"camera", camera_json(sc)}};
 
-  // Hydrostatic scale rho0 |g| H, for a pressure range when the first frame is at rest and flat.
+  // Hydrostatic scale rho0 |g| H, for a pressure range when the first frame is at rest and flat;
+  // H is the fluid's height when the frame has phases, else the domain's.
+  const double height = fluid_height(first, up, s.options.spacing, extent[up]);
   double p_scale = 0;
   for (const auto& m : s.materials)
     if (m.props.kind == MaterialKind::Fluid)
-      p_scale = std::max(p_scale, double(m.props.rest_density) * norm(m.body_force) * extent[up]);
+      p_scale = std::max(p_scale, double(m.props.rest_density) * norm(m.body_force) * height);
   if (p_scale <= 0) p_scale = 1;
   nlohmann::json ranges = nlohmann::json::object(), maps = nlohmann::json::object();
   for (const StagedField& f : first.fields) {

@@ -11,14 +11,17 @@ import os
 
 from paraview import catalyst
 from paraview.simple import (Calculator, ColorBy, CreateExtractor, CreateView, ExtractSurface,
-                             GetColorTransferFunction, GetScalarBar, Show, Threshold,
+                             GetColorTransferFunction, GetScalarBar, Show, Text, Threshold,
                              TrivialProducer)
 
-_state = {"live_taken": False, "slab_extract_taken": False}
+_state = {"live_taken": False, "slab_extract_taken": False, "time_labels": []}
 
 # The `phase` field (solver/state/derived_fields.hpp): value, label, colour.
 PHASES = [(0, "wall", [0.55, 0.55, 0.55]), (1, "water", [0.12, 0.47, 0.85]), (2, "gas", [0.98, 0.85, 0.25]),
           (3, "solid", [0.62, 0.42, 0.25]), (4, "rigid", [0.2, 0.2, 0.2])]
+
+
+TEXT = [0.0, 0.0, 0.0]
 
 
 def settings():
@@ -47,6 +50,15 @@ def _view(s, cam):
     v.Background = [1.0, 1.0, 1.0]
     v.UseColorPaletteForBackground = 0
     _camera(v, cam)
+    if s.get("time_label", True):
+        # A Text source set in catalyst_execute: AnnotateTime clashes with Catalyst's own "time"
+        # formatter argument and warns at every frame.
+        text = Text(registrationName="time_label_%d" % len(_state["time_labels"]))
+        label = Show(text, v)
+        label.Color = TEXT
+        label.FontSize = 14
+        label.WindowLocation = "Upper Left Corner"
+        _state["time_labels"].append(text)
     return v
 
 
@@ -96,6 +108,12 @@ def _colour(display, view, field, component, lut, s):
         bar = GetScalarBar(lut, view)
         bar.Title = s.get("titles", {}).get(field, field)
         bar.ComponentTitle = ""
+        bar.TitleColor = bar.LabelColor = TEXT  # the default palette's text is white
+        bar.RangeLabelFormat = "%-#.3g"
+        bar.WindowLocation = "Any Location"  # the right 20 % of the image (vis_settings frames the scene)
+        bar.Position = [0.84, 0.1]
+        bar.ScalarBarLength = 0.8
+        bar.TitleFontSize = bar.LabelFontSize = max(8, min(16, s["image_size"][1] // 38))  # 16 at 600 px
 
 
 def _png(view, name, prefix, s):
@@ -129,7 +147,7 @@ def field_pipeline(name, field, component=None, categorical=None, above_range=No
     particles = TrivialProducer(registrationName="particles")
     lut = _lut(field, s, categorical, above_range)
     shown = particles
-    if not s.get("show_walls", False) and "phase" in particles.PointData.keys():
+    if s["dimension"] == 3 and not s.get("show_walls", False) and "phase" in particles.PointData.keys():
         # Walls would hide the inside of a closed domain in 3D; the slab shows them.
         shown = Threshold(registrationName="not_walls", Input=particles)
         shown.Scalars = ["POINTS", "phase"]
@@ -163,3 +181,9 @@ def live_options(s=None, folder=None):
         options.EnableCatalystLive = 1
         options.CatalystLiveURL = s["live_url"]
     return options
+
+
+def catalyst_execute(info):
+    """Called by Catalyst at each output step before the extracts are written."""
+    for text in _state["time_labels"]:
+        text.Text = "t = %.4g s" % info.time

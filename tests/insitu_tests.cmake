@@ -93,3 +93,44 @@ endif()
 if(NOT (NOT EXISTS ${WORK}/bad))
   message(FATAL_ERROR "a run directory was left behind")
 endif()
+
+# A pipeline script that raises, on import or at a later output step: the run stops (exit 4) and
+# its log names the script's Python error, rather than finish without the figures asked for.
+foreach(script fails_on_import fails_later)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY ${PORESPH} run ${WORK}/db.toml --out ${WORK}/${script}
+                          --pipeline ${SRC}/tests/pipelines/${script}.py --quiet
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT (rc EQUAL 4))
+    message(FATAL_ERROR "a run whose pipeline ${script} raises exited ${rc}, expected 4")
+  endif()
+  file(READ ${WORK}/${script}/log.txt log)
+  if(NOT (log MATCHES "pipeline script failed at [^:]+: RuntimeError: ${script}: deliberately broken"))
+    message(FATAL_ERROR "the log does not name the pipeline's error: ${log}")
+  endif()
+endforeach()
+
+# 2D: one view (no slab), parallel projection from the default camera, walls shown; frame 0 of a
+# real 2D run against its baseline (tests/baselines/phases_2d_run.png, same threshold).
+file(READ ${SRC}/cases/poiseuille_2d.toml text)
+string(REPLACE "end = 0.5" "end = 0.02" text "${text}")
+string(APPEND text "\n[visualisation]\ninterval = 0.01\nimage_size = [320, 240]\n")
+file(WRITE ${WORK}/p2.toml "${text}")
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY ${PORESPH} run ${WORK}/p2.toml --out ${WORK}/run2d
+                        --pipeline phases --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT (rc EQUAL 0))
+  message(FATAL_ERROR "2D run with a pipeline failed (${rc}): ${err}")
+endif()
+file(GLOB slabs ${WORK}/run2d/images/phases/slab_*.png)
+if(slabs OR NOT (EXISTS ${WORK}/run2d/images/phases/3d_000002.png))
+  message(FATAL_ERROR "2D: expected 3d_00000{0,1,2}.png and no slab images")
+endif()
+file(READ ${WORK}/run2d/images/visualisation.json settings)
+string(JSON scale ERROR_VARIABLE no_scale GET "${settings}" camera parallel_scale)
+if(no_scale)
+  message(FATAL_ERROR "2D: the default camera has no parallel projection: ${settings}")
+endif()
+execute_process(COMMAND ${IMAGE_DIFF} ${WORK}/run2d/images/phases/3d_000000.png ${SRC}/tests/baselines/phases_2d_run.png
+                        ${WORK}/run2d RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT (rc EQUAL 0))
+  message(FATAL_ERROR "2D frame 0 differs from tests/baselines/phases_2d_run.png: ${out} (actual and diff in ${WORK}/run2d)")
+endif()

@@ -125,6 +125,8 @@ int drive(Case& c, const RunOptions& opt) {
       rd->log(std::string("warning: no checkpoint: ") + e.what());
     }
   };
+  using clock = std::chrono::steady_clock;
+  const auto t0 = clock::now();  // the wall time includes Catalyst's start-up and first frame
   rd->monitor(*engine);
   if (extracts) writer.write(*engine);
   if (insitu->active()) {
@@ -139,8 +141,6 @@ int drive(Case& c, const RunOptions& opt) {
   g_signal = 0;
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
-  using clock = std::chrono::steady_clock;
-  const auto t0 = clock::now();
   auto last_print = t0;
   std::string status = "completed";
   int code = 0;
@@ -201,7 +201,6 @@ int drive(Case& c, const RunOptions& opt) {
   }
   if (extracts && status == "interrupted") writer.write(*engine);
   if (extracts) writer.write_collection();
-  nlohmann::json insitu_stats;
   if (insitu->active()) {
     try {
       if (status == "interrupted") insitu->output(*engine);  // the state it stopped at, as a last frame
@@ -209,7 +208,6 @@ int drive(Case& c, const RunOptions& opt) {
     } catch (const std::exception& e) {
       rd->log(std::string("warning: in-situ visualisation: ") + e.what());
     }
-    insitu_stats = insitu->stats();
   }
 
   const double wall = std::chrono::duration<double>(clock::now() - t0).count();
@@ -227,15 +225,8 @@ int drive(Case& c, const RunOptions& opt) {
                       {"wall_seconds", wall},
                       {"particle_steps_per_second", steps * engine->particles() / std::max(wall, 1e-9)}};
   if (insitu->active()) {
-    const double share = (insitu_stats["staging_seconds"].get<double>() + insitu_stats["coprocess_seconds"].get<double>()) /
-                         std::max(wall, 1e-9);
-    insitu_stats["share_of_wall_time"] = share;
-    j["insitu"] = insitu_stats;
-    char line[200];
-    std::snprintf(line, sizeof line, "in situ: %ld frames, staging %.3g s, Catalyst %.3g s, %.1f %% of the wall time",
-                  insitu_stats["frames"].get<long>(), insitu_stats["staging_seconds"].get<double>(),
-                  insitu_stats["coprocess_seconds"].get<double>(), 100 * share);
-    rd->log(line);
+    j["insitu"] = insitu->stats(wall);
+    rd->log(insitu->report(wall));
   }
   rd->write_summary(j);
   rd->log("run " + status + " after " + std::to_string(engine->steps()) + " steps in " + seconds_text(wall) +

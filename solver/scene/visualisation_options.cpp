@@ -33,6 +33,7 @@ VisualisationOptions parse_visualisation(const toml::table& table, const std::st
   }
   v.point_radius = t.non_negative("point_radius", 0.0);
   v.scalar_bar = t.boolean("scalar_bar", true);
+  v.time_label = t.boolean("time_label", true);
   v.camera = camera(t, "camera", file, "visualisation");
   if (t.has("slab")) {
     CaseReader s(t.table("slab", false), file, "visualisation.slab");

@@ -24,6 +24,7 @@ struct VisualisationOptions {
   std::array<int, 2> image_size{800, 600};
   double point_radius = 0;  // m; 0 = half the spacing
   bool scalar_bar = true;
+  bool time_label = true;  // "t = ... s" in the upper left corner of each image
   CameraOptions camera;
   bool slab_set = false;
   std::array<double, 3> slab_origin{0, 0, 0}, slab_normal{0, 0, 1};
