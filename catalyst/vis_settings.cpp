@@ -50,12 +50,12 @@ int up_axis(const Scene& s) {
   return s.dimension == 3 ? 2 : 1;
 }
 
-// A field's default colour range: damage and colour function on [0, 1] (damage just below 1 so
-// that fully damaged particles take the above-range colour), stresses symmetric about zero,
+// A field's default colour range: damage on [0, 1) (just below 1 so that fully damaged particles
+// take the above-range colour), colour function on [-1, 1], stresses symmetric about zero,
 // pressure from 0 to at least the hydrostatic rho0 |g| H, anything else the first frame's range.
 std::array<double, 2> default_range(const std::string& name, const ParticleFrame& f, double pressure_scale) {
   if (name == "damage") return {0.0, 0.999};
-  if (name == "colour") return {0.0, 1.0};
+  if (name == "colour") return {-1.0, 1.0};  // gas -1, liquid +1 (Pazdniakou eq. 6)
   const StagedField* s = f.find(name);
   double lo = 0, hi = 0, big = 0;
   if (s && !s->data.empty()) {

@@ -2,6 +2,7 @@
 // expected.
 #include <gtest/gtest.h>
 
+#include "case_text.hpp"
 #include "scene/case_file.hpp"
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
@@ -16,22 +17,8 @@ std::string base_case() {
   return "";
 }
 
-std::string replaced(std::string s, const std::string& from, const std::string& to) {
-  const auto p = s.find(from);
-  EXPECT_NE(p, std::string::npos) << from;
-  return s.replace(p, from.size(), to);
-}
-
-// The error message a case text raises (empty if it is accepted).
-std::string error_of(const std::string& text) {
-  try {
-    Case c = load_case_text(text, "bad.toml");
-    build_particles(c);
-  } catch (const CaseError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::error_of;
+using test::replaced;
 
 void expect_error(const std::string& text, std::initializer_list<const char*> parts) {
   const std::string msg = error_of(text);

@@ -14,6 +14,7 @@
 #include "fluid/density.hpp"
 #include "fluid/momentum.hpp"
 #include "integrate/kick_drift.hpp"
+#include "interface/surface_tension.hpp"
 #include "integrate/timestep.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/fluid_proximity.hpp"
@@ -91,8 +92,13 @@ class Simulation final : public Engine {
       has_walls_ |= mats_.m[k].kind == MaterialKind::Wall;
       if (mats_.m[k].kind == MaterialKind::Fluid && mats_.m[k].viscosity > 0)
         nu_max_ = std::max(nu_max_, double(mats_.m[k].viscosity / mats_.m[k].rest_density));
+      if (mats_.m[k].kind == MaterialKind::Fluid && opt_.surface_tension > 0) {
+        const double r = mats_.m[k].rest_density / opt_.surface_tension;
+        rho_over_sigma_ = rho_over_sigma_ > 0 ? std::min(rho_over_sigma_, r) : r;
+      }
     }
     upload(sc);
+    if (opt_.surface_tension > 0) s_.enable_interface();
     bucket_start_.resize(2 * grid_.total), bucket_end_.resize(2 * grid_.total), cell_near_.resize(grid_.total);
     if (continuity()) {
       build_neighbours();
@@ -289,8 +295,9 @@ class Simulation final : public Engine {
 
   void density_pass(bool all_particles = false) {
     const bool normalised = opt_.density == DensityMethod::NormalisedSummation;
+    const bool number = opt_.density == DensityMethod::NumberSummation;
     if (normalised) B::for_each(n_, NumberDensityPass<D>{view_nb(), kern_, s_.view(), all_particles});
-    B::for_each(n_, DensitySummationPass<D>{view_nb(), kern_, s_.view(), mats_, normalised, all_particles});
+    B::for_each(n_, DensitySummationPass<D>{view_nb(), kern_, s_.view(), mats_, normalised, number, all_particles});
   }
 
   // d rho/dt with the velocity that drifts the particles (fluid/continuity.hpp).
@@ -309,6 +316,13 @@ class Simulation final : public Engine {
     fo.laplacian = opt_.laplacian_correction;
     fo.artificial_viscosity = Real(opt_.artificial_viscosity);
     fo.smoothing_length = Real(smoothing_length());
+    if (opt_.surface_tension > 0) {
+      const ParticleView<D> v = s_.view();
+      B::for_each(n_, ColourPass<D>{view_nb(), kern_, v, mats_});
+      B::for_each(n_, NormalPass<D>{view_nb(), kern_, v, mats_});
+      B::for_each(n_, CurvaturePass<D>{view_nb(), kern_, v, mats_, Real(opt_.normal_threshold / smoothing_length())});
+      fo.surface_tension = Real(opt_.surface_tension);
+    }
     B::for_each(n_, FluidForcePass<D>{view_nb(), kern_, s_.view(), mats_, fo});
   }
 
@@ -328,7 +342,8 @@ class Simulation final : public Engine {
     const ParticleView<D> v = s_.view();
     const double vmax = B::template max_of<Real>(n_, SpeedOf<D>{v});
     const double amax = B::template max_of<Real>(n_, AccelerationOf<D>{v});
-    const TimeStepLimits lim = time_step_limits(smoothing_length(), c_max_, vmax, amax, nu_max_, opt_.dt_factor);
+    const TimeStepLimits lim =
+        time_step_limits(smoothing_length(), c_max_, vmax, amax, nu_max_, opt_.dt_factor, rho_over_sigma_);
     dt_limit_ = lim.limiting();
     const double dt = lim.min();
     if (dt_first_ == 0) dt_first_ = dt;
@@ -363,7 +378,7 @@ class Simulation final : public Engine {
   DeviceArray<Vec<D>, B> x_build_;  // positions at the last list build
   double list_radius_ = 0;
   int n_ = 0;
-  double t_ = 0, dt_ = 0, dt_first_ = 0, c_max_ = 0, nu_max_ = 0;
+  double t_ = 0, dt_ = 0, dt_first_ = 0, c_max_ = 0, nu_max_ = 0, rho_over_sigma_ = 0;
   long steps_ = 0;
   bool has_walls_ = false;
   std::string dt_limit_ = "none";

@@ -24,7 +24,9 @@ struct NumberDensityPass {
   }
 };
 
-// rho_i = sum_j m_j W_ij (eq. 39), or the normalised form
+// rho_i = sum_j m_j W_ij (eq. 39), the number-density form rho_i = m_i sum_j W_ij (eq. 40: a
+// particle's density does not take its neighbours' masses, so an interface between fluids of
+// density ratio 1000 stays sharp, digest §7 item 18), or the normalised form
 // rho_i = sum_j m_j W_ij / sum_j W_ij / n_j (eq. 41, needs NumberDensityPass first);
 // then the pressure from the material's equation of state.
 template <int D>
@@ -34,15 +36,17 @@ struct DensitySummationPass {
   ParticleView<D> s;
   MaterialTable<D> mats;
   bool normalised;
+  bool number;         // eq. 40 form
   bool all_particles;  // false: walls far from any fluid keep their density and pressure
   PSPH_HD void operator()(int i) const {
     if (!all_particles && !s.near_fluid[i]) return;
     const Real w0 = kern.W(Real(0));
-    Real num = s.m[i] * w0;
+    const Real m_i = s.m[i];
+    Real num = m_i * w0;
     Real den = normalised ? w0 / s.number_density[i] : Real(1);
     nb.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
       const Real w = kern.W(r);
-      num += s.m[j] * w;
+      num += (number ? m_i : s.m[j]) * w;
       if (normalised) den += w / s.number_density[j];
     });
     const Real rho = num / den;

@@ -2,6 +2,7 @@
 // Fluid pair sums, fused in one neighbour loop: pressure force, viscous force, artificial
 // viscosity and XSPH. Gather form: each particle writes only its own outputs.
 #include "fluid/material.hpp"
+#include "interface/surface_tension.hpp"
 #include "kernels/kernel.hpp"
 #include "kernels/laplacian_correction.hpp"
 #include "neighbours/neighbour_list.hpp"
@@ -14,6 +15,7 @@ struct FluidForceOptions {
   LaplacianCorrection laplacian = LaplacianCorrection::Trace;  // of the viscous sum (see below)
   Real artificial_viscosity = 0;     // Monaghan alpha (Deptulski eq. 2.64), 0 = off
   Real smoothing_length = 0;         // h_s, for the artificial viscosity
+  Real surface_tension = 0;          // sigma; > 0: the interface passes ran (interface/surface_tension.hpp)
 };
 
 template <int D>
@@ -93,6 +95,7 @@ struct FluidForcePass {
     });
 
     if (!tensor && opt.laplacian != LaplacianCorrection::None && lambda > Real(0)) visc *= Real(D) / lambda;
+    if (opt.surface_tension > Real(0)) acc += surface_tension_acceleration(s, i, opt.surface_tension);
     s.a[i] = acc + visc + mats.body_force[mi];
     s.lap_v[i] = mu_i > Real(0) ? visc * (rho_i / mu_i) : Vec<D>::zero();
     s.v_xsph[i] = xs * opt.xsph;

@@ -75,6 +75,8 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
   }
   // Materials, in file order of their names (toml tables are ordered by key).
   std::map<std::string, int> mat_index;
+  std::vector<std::string> walls_without_angle;
+  bool has_liquid = false, has_gas = false;
   {
     const toml::table& mt = top.table("materials", true);
     if (mt.empty()) top.fail("materials", "expected at least one material");
@@ -96,6 +98,16 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
                                                                                              : EquationOfState::Linear;
         m.props.tait_gamma = Real(r.positive("tait_gamma", 7.0));
         m.body_force = r.vec<double>("body_force", D, std::array<double, 3>{0, 0, 0});
+        const bool gas = r.choice("phase", {"liquid", "gas"}, "liquid") == "gas";
+        m.props.colour = gas ? Real(-1) : Real(1);  // Pazdniakou eq. 6
+        (gas ? has_gas : has_liquid) = true;
+      } else if (r.has("contact_angle")) {
+        // Measured through the liquid: 0 = fully wetted by the liquid (Pazdniakou eq. 10).
+        const double theta = r.non_negative("contact_angle");
+        if (theta > 180) r.fail("contact_angle", "expected an angle in degrees between 0 and 180");
+        m.props.colour = Real(std::cos(theta * M_PI / 180));
+      } else {
+        walls_without_angle.push_back(name);
       }
       r.finish();
       mat_index[name] = static_cast<int>(sc.materials.size());
@@ -118,10 +130,30 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       }
   }
   {
+    CaseReader r(top.table("interface", false), file, "interface");
+    o.surface_tension = r.non_negative("surface_tension", 0.0);
+    o.normal_threshold = r.positive("normal_threshold", 0.01);
+    if (o.surface_tension > 0 && !(has_liquid && has_gas))
+      r.fail("surface_tension", "expected a case with a liquid and a gas (materials with phase = \"gas\")");
+    if (o.surface_tension > 0 && !walls_without_angle.empty())
+      top.fail("materials." + walls_without_angle.front() + ".contact_angle",
+               "expected the contact angle (degrees, through the liquid) of every wall in a case with surface tension");
+    r.finish();
+  }
+  {
     CaseReader r(top.table("solver", false), file, "solver");
-    const std::string d = r.choice("density", {"summation", "normalised_summation", "continuity"}, "summation");
-    o.density = d == "continuity" ? DensityMethod::Continuity
-                : d == "normalised_summation" ? DensityMethod::NormalisedSummation : DensityMethod::Summation;
+    // Fluids of different densities: the number-density form keeps the interface sharp (eq. 40).
+    bool ratio = false;
+    for (const auto& m : sc.materials)
+      for (const auto& n : sc.materials)
+        ratio |= m.props.kind == MaterialKind::Fluid && n.props.kind == MaterialKind::Fluid &&
+                 m.props.rest_density != n.props.rest_density;
+    const std::string d = r.choice("density", {"summation", "number_summation", "normalised_summation", "continuity"},
+                                   ratio ? "number_summation" : "summation");
+    o.density = d == "continuity"             ? DensityMethod::Continuity
+                : d == "normalised_summation" ? DensityMethod::NormalisedSummation
+                : d == "number_summation"     ? DensityMethod::NumberSummation
+                                              : DensityMethod::Summation;
     o.integrator = r.choice("integrator", {"velocity_verlet", "leapfrog"}, "velocity_verlet") == "leapfrog"
                        ? Integrator::Leapfrog : Integrator::VelocityVerlet;
     const std::string ns = r.choice("wall_noslip", {"curved", "mirror", "prescribed"}, "curved");
@@ -153,17 +185,20 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     r.finish();
     if (o.fixed_dt > 0) {
       // The limits known before the run: acoustic (at rest) and viscous (Pazdniakou eqs. 50-52).
-      double c_max = 0, nu_max = 0;
+      double c_max = 0, nu_max = 0, rho_min = 0;
       for (const auto& m : sc.materials) {
         c_max = std::max(c_max, double(m.props.sound_speed));
-        if (m.props.kind == MaterialKind::Fluid) nu_max = std::max(nu_max, double(m.props.viscosity / m.props.rest_density));
+        if (m.props.kind != MaterialKind::Fluid) continue;
+        nu_max = std::max(nu_max, double(m.props.viscosity / m.props.rest_density));
+        rho_min = rho_min > 0 ? std::min(rho_min, double(m.props.rest_density)) : double(m.props.rest_density);
       }
       const double hs = o.support_radius / support_per_smoothing_length(o.kernel);
-      const TimeStepLimits lim = time_step_limits(hs, c_max, 0.0, 0.0, nu_max, 1.0);
+      const double rho_over_sigma = o.surface_tension > 0 ? rho_min / o.surface_tension : 0.0;
+      const TimeStepLimits lim = time_step_limits(hs, c_max, 0.0, 0.0, nu_max, 1.0, rho_over_sigma);
       const double limit = lim.min();
       if (o.fixed_dt > 2 * limit)
         throw CaseError(file + ": solver.dt: a fixed step of " + CaseReader::fmt(o.fixed_dt) +
-                        " s is impossible: the acoustic/viscous stability limit is " + CaseReader::fmt(limit) + " s");
+                        " s is impossible: the acoustic/viscous/capillary stability limit is " + CaseReader::fmt(limit) + " s");
     }
   }
   {

@@ -9,7 +9,7 @@ namespace psph {
 Phase phase_of(const Material& m) {
   switch (m.kind) {
     case MaterialKind::Wall: return Phase::Wall;
-    case MaterialKind::Fluid: return Phase::Water;
+    case MaterialKind::Fluid: return m.colour < 0 ? Phase::Gas : Phase::Water;
   }
   return Phase::Wall;
 }

@@ -29,6 +29,10 @@ struct ParticleView {
   std::uint8_t* material;
   std::int32_t* id;   // particle id at creation, to follow particles across reorderings
   const std::uint8_t* near_fluid;  // 1 where a fluid particle may be within the support (neighbours/)
+  // Two-fluid cases only (null otherwise): interface/surface_tension.hpp.
+  Real* colour;             // smoothed colour c (eq. 58)
+  Vec<D>* colour_gradient;  // n = grad c (eq. 59a)
+  Real* curvature;          // kappa = -div n^ (eqs. 7, 60)
 };
 
 template <class T, class B>
@@ -60,7 +64,19 @@ class ParticleState {
   ParticleView<D> view() {
     return ParticleView<D>{n_,         x.data(),    v.data(),    a.data(),  v_xsph.data(), v_noslip.data(), lap_v.data(),
                            rho.data(), drho.data(), p.data(),    m.data(),  rho0.data(),
-                           number_density.data(),   material.data(), id.data(), near_fluid.data()};
+                           number_density.data(),   material.data(), id.data(), near_fluid.data(),
+                           colour.data(), colour_gradient.data(), curvature.data()};
+  }
+
+  // Allocates and registers the interface fields (a case with two fluids and surface tension).
+  void enable_interface() {
+    if (interface_) return;
+    interface_ = true;
+    colour.resize(n_), colour_gradient.resize(n_), curvature.resize(n_);
+    colour.zero(), colour_gradient.zero(), curvature.zero();
+    reg(colour, FieldType::Real, 1, "colour", "-", "smoothed colour function, +1 liquid, -1 gas (Pazdniakou eq. 58)");
+    reg(colour_gradient, FieldType::Real, D, "colour_gradient", "1/m", "interface normal n = grad c (eq. 59a)");
+    reg(curvature, FieldType::Real, 1, "curvature", "1/m", "interface curvature -div n^ (eqs. 7, 60)");
   }
 
   // Reorders every registered field: field[i] <- field[perm[i]].
@@ -73,6 +89,8 @@ class ParticleState {
   DeviceArray<std::uint8_t, B> material;
   DeviceArray<std::int32_t, B> id;
   DeviceArray<std::uint8_t, B> near_fluid;  // not registered: recomputed after every reordering
+  DeviceArray<Real, B> colour, curvature;     // empty unless enable_interface()
+  DeviceArray<Vec<D>, B> colour_gradient;
 
  private:
   template <class T>
@@ -130,6 +148,7 @@ class ParticleState {
   }
 
   int n_ = 0;
+  bool interface_ = false;
   FieldRegistry registry_;
   DeviceArray<Vec<D>, B> scratch_vec_;
   DeviceArray<Real, B> scratch_real_;

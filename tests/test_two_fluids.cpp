@@ -1,0 +1,82 @@
+// Two fluids: the case options ([interface], phase, contact_angle, the density default) and the
+// interface passes on a flat and a curved interface.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "case_text.hpp"
+#include "engine/engine.hpp"
+#include "scene/case_file.hpp"
+#include "scene/embedded_cases.hpp"
+#include "scene/scene_builder.hpp"
+#include "state/derived_fields.hpp"
+#include "validation/laplace_bubble.hpp"
+
+using namespace psph;
+
+namespace {
+
+std::string bubble_text() { return embedded_case_text("laplace_bubble_2d"); }
+
+using test::error_of;
+using test::replaced;
+
+}  // namespace
+
+TEST(TwoFluids, CaseOptions) {
+  const Case c = load_case_text(bubble_text(), "laplace.toml");
+  EXPECT_EQ(c.scene.options.surface_tension, 1e-3);
+  for (const auto& m : c.scene.materials) EXPECT_EQ(m.props.colour, m.name == "gas" ? -1 : 1) << m.name;
+  EXPECT_EQ(c.scene.options.density, DensityMethod::Summation);  // equal densities
+  // A density ratio selects the number-density form by default.
+  const Case ratio = load_case_text(replaced(bubble_text(), "phase = \"gas\"\ndensity = 1000.0", "phase = \"gas\"\ndensity = 1.0"), "r.toml");
+  EXPECT_EQ(ratio.scene.options.density, DensityMethod::NumberSummation);
+  EXPECT_EQ(phase_of(ratio.scene.materials[0].props), Phase::Gas);  // "gas" sorts before "water"
+}
+
+TEST(TwoFluids, BadInput) {
+  // Surface tension without a gas.
+  const std::string no_gas = error_of(replaced(bubble_text(), "phase = \"gas\"\n", ""));
+  EXPECT_NE(no_gas.find("interface.surface_tension"), std::string::npos) << no_gas;
+  EXPECT_NE(no_gas.find("phase = \"gas\""), std::string::npos) << no_gas;
+  // A wall without a contact angle in a case with surface tension.
+  const std::string wall = error_of(replaced(bubble_text(), "[interface]", "[materials.rock]\nkind = \"wall\"\n\n[interface]"));
+  EXPECT_NE(wall.find("materials.rock.contact_angle"), std::string::npos) << wall;
+  const std::string angle =
+      error_of(replaced(bubble_text(), "[interface]", "[materials.rock]\nkind = \"wall\"\ncontact_angle = 200.0\n\n[interface]"));
+  EXPECT_NE(angle.find("between 0 and 180"), std::string::npos) << angle;
+  EXPECT_NE(error_of(replaced(bubble_text(), "phase = \"gas\"", "phase = \"oil\"")).find("materials.gas.phase"),
+            std::string::npos);
+}
+
+TEST(TwoFluids, ContactAngleSetsTheWallColour) {
+  const Case c = load_case_text(
+      replaced(bubble_text(), "[interface]", "[materials.rock]\nkind = \"wall\"\ncontact_angle = 60.0\n\n[interface]"), "w.toml");
+  for (const auto& m : c.scene.materials)
+    if (m.name == "rock") EXPECT_NEAR(m.props.colour, 0.5, 1e-6);
+}
+
+// At the first force evaluation of the bubble (a disc on the lattice), the interface normal
+// points out of the gas (gas -> liquid), and the curvature is negative (kappa = -div n^ ~ -1/R)
+// so that the surface force points into the gas.
+TEST(TwoFluids, NormalAndCurvatureSignsOnABubble) {
+  const Case c = laplace_bubble_case(8);
+  auto e = make_engine(c.scene, "cpu");
+  const std::vector<double> x = e->field("position"), n = e->field("colour_gradient");
+  const std::vector<double> kappa = e->field("curvature"), colour = e->field("colour");
+  const double centre = 0.5 * (c.scene.upper[0] - c.scene.lower[0]), R = 8e-4;
+  int band = 0;
+  double mean_kappa = 0;
+  for (int i = 0; i < e->particles(); ++i) {
+    const double dx = x[2 * i] - centre, dy = x[2 * i + 1] - centre, r = std::hypot(dx, dy);
+    EXPECT_GE(colour[i], -1 - 1e-6);
+    EXPECT_LE(colour[i], 1 + 1e-6);
+    if (std::fabs(r - R) > 1e-4) continue;  // within one spacing of the interface
+    EXPECT_GT(n[2 * i] * dx + n[2 * i + 1] * dy, 0) << "normal not outward at r = " << r;
+    mean_kappa += kappa[i], ++band;
+  }
+  ASSERT_GT(band, 20);
+  mean_kappa /= band;
+  EXPECT_LT(mean_kappa, 0);
+  EXPECT_NEAR(mean_kappa * R, -1, 0.25);  // a lattice disc: within 25 % of -1/R before relaxing
+}
