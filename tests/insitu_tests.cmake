@@ -3,6 +3,7 @@
 # the solver's values, `figures` must re-render the sequence from the extracts, and --live with
 # nobody listening must not stop the run.
 cmake_minimum_required(VERSION 3.24)
+include(${CMAKE_CURRENT_LIST_DIR}/run_poresph.cmake)
 
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
@@ -12,11 +13,7 @@ string(REPLACE "extract_interval = 0.25" "extract_interval = 0.005" text "${text
 string(APPEND text "\n[visualisation]\npipelines = [\"phases\"]\ninterval = 0.005\nimage_size = [320, 240]\n")
 file(WRITE ${WORK}/db.toml "${text}")
 
-execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY ${PORESPH} run ${WORK}/db.toml --out ${WORK}/run
-                        --pipeline pressure --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT (rc EQUAL 0))
-  message(FATAL_ERROR "run with pipelines failed (${rc}): ${out} ${err}")
-endif()
+run_poresph(0 run ${WORK}/db.toml --out ${WORK}/run --pipeline pressure --quiet)
 file(READ ${WORK}/run/log.txt log)
 if(NOT (log MATCHES "started Xvfb on :[0-9]+"))
   message(FATAL_ERROR "no own Xvfb without a display: ${log}")
@@ -55,11 +52,8 @@ endif()
 
 # figures: the same pictures again, from the extracts, by pvbatch.
 file(RENAME ${WORK}/run/images/pressure/3d_000004.png ${WORK}/insitu_3d_000004.png)
-execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY ${PORESPH} figures ${WORK}/run --pipeline pressure
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT (rc EQUAL 0))
-  message(FATAL_ERROR "figures failed (${rc}): ${out} ${err}")
-endif()
+run_poresph(0 figures ${WORK}/run --pipeline pressure)
+set(figures_out "${out}")
 if(NOT (EXISTS ${WORK}/run/images/pressure/3d_000004.png))
   message(FATAL_ERROR "figures did not re-render frame 4")
 endif()
@@ -70,25 +64,17 @@ if(NOT (rc EQUAL 0))
 endif()
 if(FFMPEG)
   if(NOT (EXISTS ${WORK}/run/images/pressure/3d.mp4))
-    message(FATAL_ERROR "figures assembled no MP4 though ffmpeg is installed: ${err}")
+    message(FATAL_ERROR "figures assembled no MP4 though ffmpeg is installed: ${figures_out}")
   endif()
 endif()
 
 # Live with nobody listening: the run carries on.
-execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY ${PORESPH} run ${WORK}/db.toml --out ${WORK}/live
-                        --live localhost:1 --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT (rc EQUAL 0))
-  message(FATAL_ERROR "a run with --live and no ParaView listening failed (${rc}): ${err}")
-endif()
+run_poresph(0 run ${WORK}/db.toml --out ${WORK}/live --live localhost:1 --quiet)
 
 # Bad pipeline names: exit 2, no run directory.
-execute_process(COMMAND ${PORESPH} run ${WORK}/db.toml --out ${WORK}/bad --pipeline nosuch
-                RESULT_VARIABLE rc ERROR_VARIABLE err)
-if(NOT (rc EQUAL 2))
-  message(FATAL_ERROR "an unknown pipeline was not rejected: ${rc}")
-endif()
-if(NOT (err MATCHES "--pipeline nosuch: no such pipeline"))
-  message(FATAL_ERROR "unclear message: ${err}")
+run_poresph(2 run ${WORK}/db.toml --out ${WORK}/bad --pipeline nosuch)
+if(NOT (out MATCHES "--pipeline nosuch: no such pipeline"))
+  message(FATAL_ERROR "unclear message: ${out}")
 endif()
 if(NOT (NOT EXISTS ${WORK}/bad))
   message(FATAL_ERROR "a run directory was left behind")
@@ -97,12 +83,7 @@ endif()
 # A pipeline script that raises, on import or at a later output step: the run stops (exit 4) and
 # its log names the script's Python error, rather than finish without the figures asked for.
 foreach(script fails_on_import fails_later)
-  execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY ${PORESPH} run ${WORK}/db.toml --out ${WORK}/${script}
-                          --pipeline ${SRC}/tests/pipelines/${script}.py --quiet
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT (rc EQUAL 4))
-    message(FATAL_ERROR "a run whose pipeline ${script} raises exited ${rc}, expected 4")
-  endif()
+  run_poresph(4 run ${WORK}/db.toml --out ${WORK}/${script} --pipeline ${SRC}/tests/pipelines/${script}.py --quiet)
   file(READ ${WORK}/${script}/log.txt log)
   if(NOT (log MATCHES "pipeline script failed at [^:]+: RuntimeError: ${script}: deliberately broken"))
     message(FATAL_ERROR "the log does not name the pipeline's error: ${log}")
@@ -115,11 +96,7 @@ file(READ ${SRC}/cases/poiseuille_2d.toml text)
 string(REPLACE "end = 0.5" "end = 0.02" text "${text}")
 string(APPEND text "\n[visualisation]\ninterval = 0.01\nimage_size = [320, 240]\n")
 file(WRITE ${WORK}/p2.toml "${text}")
-execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY ${PORESPH} run ${WORK}/p2.toml --out ${WORK}/run2d
-                        --pipeline phases --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT (rc EQUAL 0))
-  message(FATAL_ERROR "2D run with a pipeline failed (${rc}): ${err}")
-endif()
+run_poresph(0 run ${WORK}/p2.toml --out ${WORK}/run2d --pipeline phases --quiet)
 file(GLOB slabs ${WORK}/run2d/images/phases/slab_*.png)
 if(slabs OR NOT (EXISTS ${WORK}/run2d/images/phases/3d_000002.png))
   message(FATAL_ERROR "2D: expected 3d_00000{0,1,2}.png and no slab images")

@@ -144,10 +144,12 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     CaseReader r(top.table("solver", false), file, "solver");
     // Fluids of different densities: the number-density form keeps the interface sharp (eq. 40).
     bool ratio = false;
+    double first_fluid = 0;
     for (const auto& m : sc.materials)
-      for (const auto& n : sc.materials)
-        ratio |= m.props.kind == MaterialKind::Fluid && n.props.kind == MaterialKind::Fluid &&
-                 m.props.rest_density != n.props.rest_density;
+      if (m.props.kind == MaterialKind::Fluid) {
+        if (first_fluid == 0) first_fluid = m.props.rest_density;
+        ratio |= m.props.rest_density != first_fluid;
+      }
     const std::string d = r.choice("density", {"summation", "number_summation", "normalised_summation", "continuity"},
                                    ratio ? "number_summation" : "summation");
     o.density = d == "continuity"             ? DensityMethod::Continuity
