@@ -20,7 +20,8 @@ namespace psph {
 enum class WallPressure { Summation = 0, Extrapolated = 1 };
 
 // rho from p for material `mat` (inverse of fluid/eos.hpp).
-PSPH_HD inline Real density_from_pressure(const Material& mat, Real p, Real rho0) {
+PSPH_HD inline Real density_from_pressure(const Material& mat, Real p_abs, Real rho0) {
+  const Real p = p_abs - mat.background_pressure;
   const Real c2 = mat.sound_speed * mat.sound_speed;
   if (mat.eos == EquationOfState::Tait) {
     const Real base = Real(1) + p * mat.tait_gamma / (rho0 * c2);
@@ -45,7 +46,7 @@ struct WallPressurePass {
         psum += (s.p[j] + s.rho[j] * dot(mats.body_force[s.material[j]], rij)) * w;
         wsum += w;
       });
-    const Real p = wsum > Real(0) ? psum / wsum : Real(0);
+    const Real p = wsum > Real(0) ? psum / wsum : mats[mi].background_pressure;
     s.p[i] = p;
     s.rho[i] = density_from_pressure(mats[mi], p, s.rho0[i]);
   }

@@ -63,7 +63,7 @@ struct SetWallRestDensity {
   PSPH_HD void operator()(int i) const {
     if (!mats.is_fluid(s.material[i])) {
       s.rho0[i] = s.rho[i];
-      s.p[i] = Real(0);
+      s.p[i] = mats[s.material[i]].background_pressure;
     }
   }
 };
@@ -316,6 +316,7 @@ class Simulation final : public Engine {
     fo.laplacian = opt_.laplacian_correction;
     fo.artificial_viscosity = Real(opt_.artificial_viscosity);
     fo.smoothing_length = Real(smoothing_length());
+    fo.number_density = opt_.density == DensityMethod::NumberSummation;
     if (opt_.surface_tension > 0) {
       const ParticleView<D> v = s_.view();
       B::for_each(n_, ColourPass<D>{view_nb(), kern_, v, mats_});

@@ -16,6 +16,7 @@ struct Material {
   Real sound_speed = 1;      // m/s
   Real viscosity = 0;        // dynamic viscosity (Pa s); walls take the fluid's (see momentum.hpp)
   Real tait_gamma = 7;
+  Real background_pressure = 0;  // Pa, added by the EOS (fluid/eos.hpp); one value for all materials
   // Colour of the continuum surface force (interface/surface_tension.hpp, Pazdniakou eqs. 6, 10):
   // +1 liquid, -1 gas, cos(contact angle) for a wall.
   Real colour = 1;

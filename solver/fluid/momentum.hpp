@@ -16,6 +16,7 @@ struct FluidForceOptions {
   Real artificial_viscosity = 0;     // Monaghan alpha (Deptulski eq. 2.64), 0 = off
   Real smoothing_length = 0;         // h_s, for the artificial viscosity
   Real surface_tension = 0;          // sigma; > 0: the interface passes ran (interface/surface_tension.hpp)
+  bool number_density = false;       // pressure in the Hu & Adams (2006) volume form (see below)
 };
 
 template <int D>
@@ -33,6 +34,8 @@ struct FluidForcePass {
     const Real rho_i = s.rho[i];
     const Real inv_rho_i = Real(1) / rho_i;
     const Real p_rho2_i = s.p[i] * inv_rho_i * inv_rho_i;
+    const Real inv_m_i = Real(1) / s.m[i];
+    const Real p_V2_i = s.p[i] * s.m[i] * inv_rho_i * s.m[i] * inv_rho_i;
     const Real mu_i = mats[mi].viscosity;
     const Real c_i = mats[mi].sound_speed;
     const Real hs = opt.smoothing_length;
@@ -67,8 +70,12 @@ struct FluidForcePass {
       const Real dw_r = kern.F(r);  // grad_i W_ij = r_ij F_ij
       const Vec<D> vij = v_i - s.v[j];
       const bool fluid_j = mats.is_fluid(mj);
-      // Pressure, symmetric form (Pazdniakou eq. 54b in eq. 57).
-      Real pterm = m_j * (p_rho2_i + s.p[j] * inv_rho_j * inv_rho_j);
+      // Pressure, symmetric form (Pazdniakou eq. 54b in eq. 57). With number density the particle
+      // masses differ by the density ratio, and eq. 54b would weigh a gas particle's own pressure by
+      // its liquid neighbour's mass; the volume form of Hu & Adams (2006, J. Comput. Phys. 213:844),
+      // (p_i V_i^2 + p_j V_j^2) / m_i, is the same for equal masses and stays consistent.
+      Real pterm = opt.number_density ? (p_V2_i + s.p[j] * V_j * V_j) * inv_m_i
+                                      : m_j * (p_rho2_i + s.p[j] * inv_rho_j * inv_rho_j);
       // Artificial viscosity for approaching pairs (Monaghan 1992; Deptulski eq. 2.64 with the
       // sign that makes it repulsive).
       const Real vr = dot(vij, rij);

@@ -89,7 +89,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       m.name = name;
       const std::string kind = r.choice("kind", {"fluid", "wall"});
       m.props.kind = kind == "fluid" ? MaterialKind::Fluid : MaterialKind::Wall;
-      // A wall's density is optional: by default it is the first fluid's (set below).
+      // A wall's density is optional: by default it is the densest fluid's (set below).
       m.props.rest_density = (kind == "fluid" || r.has("density")) ? Real(r.positive("density")) : Real(0);
       if (kind == "fluid") {
         m.props.viscosity = Real(r.non_negative("viscosity"));
@@ -115,10 +115,12 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     }
     if (sc.materials.size() > static_cast<std::size_t>(kMaxMaterials))
       top.fail("materials", "expected at most " + std::to_string(kMaxMaterials) + " materials");
-    // Walls take the density and sound speed of the first fluid unless given (digest §7 item 17).
+    // Walls take the density of the densest fluid unless given, and the largest sound speed (digest
+    // §7 item 17). The densest: a wall's volume m/rho follows its pressure through rho0 + p/c^2, so
+    // a wall under water with a gas's rest density would shrink by the water's head over 1 kg/m^3.
     const SceneMaterial* fluid = nullptr;
     for (const auto& m : sc.materials)
-      if (m.props.kind == MaterialKind::Fluid) { fluid = &m; break; }
+      if (m.props.kind == MaterialKind::Fluid && (!fluid || m.props.rest_density > fluid->props.rest_density)) fluid = &m;
     if (!fluid) top.fail("materials", "expected at least one material with kind = \"fluid\"");
     Real c_max = 0;
     for (const auto& m : sc.materials)
@@ -177,6 +179,8 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     o.fixed_dt = r.non_negative("dt", 0.0);
     o.neighbour_skin = r.non_negative("neighbour_skin", 0.1);
     o.max_density_deviation = r.non_negative("max_density_deviation", 0.0);
+    const double p_b = r.non_negative("background_pressure", 0.0);
+    for (auto& m : sc.materials) m.props.background_pressure = Real(p_b);
     if (o.neighbour_skin > 1) r.fail("neighbour_skin", "expected a fraction of the support radius in [0, 1]");
     r.finish();
   }

@@ -18,4 +18,9 @@ double poiseuille_couette_velocity(double x, double t, double L, double g, doubl
   return v;
 }
 
+double two_phase_poiseuille_velocity(double x, double l, double F, double mu_gas, double mu_liquid) {
+  const double mu = x < 0 ? mu_gas : mu_liquid, s = mu_gas + mu_liquid;
+  return -F * l * l / (2 * mu) * (x * x / (l * l) - x / l * (mu_gas - mu_liquid) / s - 2 * mu / s);
+}
+
 }  // namespace psph

@@ -9,4 +9,9 @@ namespace psph {
 // nu = mu / rho. `terms` sine terms (the series converges like 1/n^2 at t = 0).
 double poiseuille_couette_velocity(double x, double t, double L, double g, double V, double nu, int terms = 400);
 
+// Steady layered Poiseuille flow of gas (-l <= x <= 0) and liquid (0 <= x <= l) between walls at
+// x = -l and x = l, driven by the same force per volume F in both (Pazdniakou 2018 eq. 82, with
+// the ranges in l instead of the printed h, digest §7 item 4).
+double two_phase_poiseuille_velocity(double x, double l, double F, double mu_gas, double mu_liquid);
+
 }  // namespace psph

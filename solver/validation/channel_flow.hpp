@@ -20,4 +20,16 @@ struct ChannelErrors {
 // `c` must have its particles built; the flow is along the last axis, the walls normal to x.
 ChannelErrors channel_flow_errors(const Case& c, const std::string& backend, const std::vector<double>& times);
 
+// Two-phase layered Poiseuille flow (Pazdniakou 2018 §4.3): the steady profile of eq. 82 at the
+// case's end time. Walls at x = -l and l (l from the fluid's extent), gas at x < 0.
+struct TwoPhaseChannelErrors {
+  double error_of_gas_peak = 0;       // max |v - v_exact| over all fluid particles / gas peak
+  double error_of_liquid_peak = 0;    // max |v - v_exact| over the liquid / liquid peak (at x = 0)
+  double gas_peak = 0, liquid_peak = 0;  // exact (m/s)
+  long steps = 0;
+  int particles = 0;
+  double seconds = 0;
+};
+TwoPhaseChannelErrors two_phase_channel_errors(const Case& c, const std::string& backend);
+
 }  // namespace psph
