@@ -16,6 +16,7 @@
 #include "io/checkpoint_file.hpp"
 #include "io/particle_output.hpp"
 #include "io/run_directory.hpp"
+#include "monitors/two_phase.hpp"
 #include "scene/case_file.hpp"
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
@@ -125,9 +126,23 @@ int drive(Case& c, const RunOptions& opt) {
       rd->log(std::string("warning: no checkpoint: ") + e.what());
     }
   };
+  std::unique_ptr<TwoPhaseMonitor> two_phase;
+  if (c.two_phase) {
+    two_phase = std::make_unique<TwoPhaseMonitor>(c.scene, c.monitor_region);
+    rd->add_monitor_columns(two_phase->columns());
+  }
+  auto monitor = [&] {
+    if (!two_phase) return rd->monitor(*engine);
+    const bool before = two_phase->percolation_time() >= 0;
+    rd->monitor(*engine, two_phase->sample(*engine));
+    if (!before && two_phase->percolation_time() >= 0)
+      rd->log("gas percolates (joins the inlet and outlet of the monitor region) at t = " +
+              std::to_string(two_phase->percolation_time()) + " s, gas saturation " +
+              std::to_string(two_phase->last().saturation_gas));
+  };
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();  // the wall time includes Catalyst's start-up and first frame
-  rd->monitor(*engine);
+  monitor();
   if (extracts) writer.write(*engine);
   if (insitu->active()) {
     try {
@@ -150,7 +165,7 @@ int drive(Case& c, const RunOptions& opt) {
       engine->step(t_next);
       const double t = engine->time();
       if (t >= n_mon * dt_mon * (1 - 1e-12)) {
-        rd->monitor(*engine);
+        monitor();
         while (n_mon * dt_mon <= t * (1 + 1e-12)) ++n_mon;
       }
       if (t >= n_ext * dt_ext * (1 - 1e-12)) {
@@ -196,7 +211,7 @@ int drive(Case& c, const RunOptions& opt) {
   std::signal(SIGTERM, SIG_DFL);
   // An unstable or failed state is not saved: the last good checkpoint stays.
   if (status != "unstable" && status != "failed") {
-    rd->monitor(*engine);
+    monitor();
     checkpoint();
   }
   if (extracts && status == "interrupted") writer.write(*engine);
@@ -224,6 +239,13 @@ int drive(Case& c, const RunOptions& opt) {
                       {"end_time", t_end},
                       {"wall_seconds", wall},
                       {"particle_steps_per_second", steps * engine->particles() / std::max(wall, 1e-9)}};
+  if (two_phase) {
+    const TwoPhaseSample& s = two_phase->last();
+    const double tp = two_phase->percolation_time();
+    j["two_phase"] = {{"percolation_time", tp >= 0 ? nlohmann::json(tp) : nlohmann::json(nullptr)},
+                      {"saturation_gas", s.saturation_gas},
+                      {"capillary_pressure", s.pressure_gas - s.pressure_liquid}};
+  }
   if (insitu->active()) {
     j["insitu"] = insitu->stats(wall);
     rd->log(insitu->report(wall));
@@ -264,7 +286,7 @@ int cmd_figures(const std::string& run_dir, const std::vector<std::string>& pipe
 }
 
 int cmd_demo(const RunOptions& opt) {
-  const std::string name = "poiseuille_couette";
+  const std::string name = "drainage_2d";
   for (const auto& ec : embedded_cases())
     if (name == ec.name) {
       const std::string text = ec.text;

@@ -43,7 +43,7 @@ struct WallPressurePass {
     if (s.near_fluid[i])
       nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
         const Real w = kern.W(r);
-        psum += (s.p[j] + s.rho[j] * dot(mats.body_force[s.material[j]], rij)) * w;
+        psum += (s.p[j] + s.rho[j] * dot(mats.body_force_at(s.material[j], s.x[j]), rij)) * w;
         wsum += w;
       });
     const Real p = wsum > Real(0) ? psum / wsum : mats[mi].background_pressure;

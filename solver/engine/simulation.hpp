@@ -97,6 +97,14 @@ class Simulation final : public Engine {
         rho_over_sigma_ = rho_over_sigma_ > 0 ? std::min(rho_over_sigma_, r) : r;
       }
     }
+    mats_.region_count = static_cast<int>(sc.force_regions.size());
+    for (int r = 0; r < mats_.region_count; ++r) {
+      const SceneForceRegion& f = sc.force_regions[r];
+      mats_.region[r].material = f.material;
+      for (int d = 0; d < D; ++d)
+        mats_.region[r].lower[d] = Real(f.lower[d]), mats_.region[r].upper[d] = Real(f.upper[d]),
+        mats_.region[r].acceleration[d] = Real(f.acceleration[d]);
+    }
     upload(sc);
     if (opt_.surface_tension > 0) s_.enable_interface();
     bucket_start_.resize(2 * grid_.total), bucket_end_.resize(2 * grid_.total), cell_near_.resize(grid_.total);

@@ -23,15 +23,36 @@ struct Material {
 };
 
 constexpr int kMaxMaterials = 8;
+constexpr int kMaxForceRegions = 4;
+
+// A body force on one material inside a box only: e.g. the gas of a reservoir that drives a
+// drainage through a periodic cell (Pazdniakou 2018 §5.2, digest §7 item 27).
+template <int D>
+struct ForceRegion {
+  int material = 0;
+  Vec<D> lower, upper, acceleration;
+};
 
 template <int D>
 struct MaterialTable {
   int count = 0;
   Material m[kMaxMaterials];
   Vec<D> body_force[kMaxMaterials];  // m/s^2, per material
+  int region_count = 0;
+  ForceRegion<D> region[kMaxForceRegions];
 
   PSPH_HD const Material& operator[](int k) const { return m[k]; }
   PSPH_HD bool is_fluid(int k) const { return m[k].kind == MaterialKind::Fluid; }
+  // Body force (m/s^2) on a particle of material k at x: the material's plus its regions'.
+  PSPH_HD Vec<D> body_force_at(int k, const Vec<D>& x) const {
+    Vec<D> g = body_force[k];
+    for (int r = 0; r < region_count; ++r) {
+      bool in = region[r].material == k;
+      for (int d = 0; d < D; ++d) in = in && x[d] >= region[r].lower[d] && x[d] < region[r].upper[d];
+      if (in) g += region[r].acceleration;
+    }
+    return g;
+  }
 };
 
 }  // namespace psph

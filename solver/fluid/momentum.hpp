@@ -103,7 +103,7 @@ struct FluidForcePass {
 
     if (!tensor && opt.laplacian != LaplacianCorrection::None && lambda > Real(0)) visc *= Real(D) / lambda;
     if (opt.surface_tension > Real(0)) acc += surface_tension_acceleration(s, i, opt.surface_tension);
-    s.a[i] = acc + visc + mats.body_force[mi];
+    s.a[i] = acc + visc + mats.body_force_at(mi, s.x[i]);
     s.lap_v[i] = mu_i > Real(0) ? visc * (rho_i / mu_i) : Vec<D>::zero();
     s.v_xsph[i] = xs * opt.xsph;
   }

@@ -18,7 +18,11 @@ RunDirectory::RunDirectory(const std::string& path, const std::string& resolved)
   std::ofstream(path + "/case.resolved.toml") << resolved << "\n";
   log_.open(path + "/log.txt");
   monitors_.open(path + "/monitors.csv");
-  monitors_ << "step,time,dt,dt_limit,kinetic_energy,v_max,a_max,density_deviation_max\n";
+}
+
+void RunDirectory::add_monitor_columns(const std::vector<std::string>& names) {
+  if (header_written_) throw std::logic_error("monitor columns added after the first row");
+  extra_columns_.insert(extra_columns_.end(), names.begin(), names.end());
 }
 
 void RunDirectory::log(const std::string& line) {
@@ -27,11 +31,20 @@ void RunDirectory::log(const std::string& line) {
   log_.flush();
 }
 
-void RunDirectory::monitor(Engine& e) {
+void RunDirectory::monitor(Engine& e, const std::vector<double>& extra) {
+  if (!header_written_) {
+    monitors_ << "step,time,dt,dt_limit,kinetic_energy,v_max,a_max,density_deviation_max";
+    for (const auto& c : extra_columns_) monitors_ << ',' << c;
+    monitors_ << '\n';
+    header_written_ = true;
+  }
+  if (extra.size() != extra_columns_.size()) throw std::logic_error("monitor row and columns differ in number");
   const StepStats s = e.stats();
   monitors_.precision(10);
   monitors_ << e.steps() << ',' << e.time() << ',' << e.last_dt() << ',' << s.dt_limit << ',' << s.kinetic_energy
-            << ',' << s.v_max << ',' << s.a_max << ',' << s.density_deviation_max << '\n';
+            << ',' << s.v_max << ',' << s.a_max << ',' << s.density_deviation_max;
+  for (double x : extra) monitors_ << ',' << x;
+  monitors_ << '\n';
   monitors_.flush();
 }
 

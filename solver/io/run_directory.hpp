@@ -3,6 +3,7 @@
 // extracts/, images/, checkpoints/.
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -19,7 +20,10 @@ class RunDirectory {
 
   // A line to the terminal and to log.txt.
   void log(const std::string& line);
-  void monitor(Engine& e);
+  // Columns after the engine's own (step ... density_deviation_max), before the first monitor row.
+  void add_monitor_columns(const std::vector<std::string>& names);
+  // A row of monitors.csv: the engine's statistics, then `extra` (one value per added column).
+  void monitor(Engine& e, const std::vector<double>& extra = {});
   void write_summary(const nlohmann::json& j) const;
   // Writes checkpoints/step_<step>.ckpt and deletes the oldest beyond `keep`; returns its path.
   std::string save_checkpoint(Engine& e, const std::string& case_name, int keep);
@@ -27,6 +31,8 @@ class RunDirectory {
  private:
   std::string path_;
   std::ofstream log_, monitors_;
+  std::vector<std::string> extra_columns_;
+  bool header_written_ = false;
 };
 
 // Default run directory: runs/<case name>-<UTC timestamp>.

@@ -6,6 +6,7 @@
 #include "scene/case_reader.hpp"
 #include "scene/visualisation_options.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -131,6 +132,29 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
         m.props.sound_speed = c_max;
       }
   }
+  if (const toml::node* g = top.node("body_force_region")) {
+    // Body forces on one fluid inside a box (e.g. the reservoir gas of a drainage).
+    const toml::array* arr = g->as_array();
+    if (!arr || !arr->is_array_of_tables()) top.fail("body_force_region", "expected an array of tables [[body_force_region]]", g);
+    if (arr->size() > static_cast<std::size_t>(kMaxForceRegions))
+      top.fail("body_force_region", "expected at most " + std::to_string(kMaxForceRegions) + " regions", g);
+    int idx = 0;
+    for (const auto& e : *arr) {
+      CaseReader r(*e.as_table(), file, "body_force_region[" + std::to_string(idx++) + "]");
+      SceneForceRegion f;
+      const std::string mname = r.string("material");
+      if (!mat_index.count(mname) || sc.materials[mat_index[mname]].props.kind != MaterialKind::Fluid)
+        r.fail("material", "expected the name of a fluid under [materials], got \"" + mname + "\"");
+      f.material = mat_index[mname];
+      f.lower = r.vec<double>("lower", D);
+      f.upper = r.vec<double>("upper", D);
+      for (int k = 0; k < D; ++k)
+        if (!(f.upper[k] > f.lower[k])) r.fail("upper", "expected upper > lower on every axis (axis " + std::to_string(k) + ")");
+      f.acceleration = r.vec<double>("body_force", D);
+      r.finish();
+      sc.force_regions.push_back(f);
+    }
+  }
   {
     CaseReader r(top.table("interface", false), file, "interface");
     o.surface_tension = r.non_negative("surface_tension", 0.0);
@@ -217,6 +241,26 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     r.finish();
   }
   c.visualisation = parse_visualisation(top.table("visualisation", false), file);
+  c.two_phase = has_liquid && has_gas;
+  {
+    CaseReader r(top.table("monitors", false), file, "monitors");
+    MonitorRegion& m = c.monitor_region;
+    m.lower = r.vec<double>("region_lower", D, sc.lower);
+    m.upper = r.vec<double>("region_upper", D, sc.upper);
+    for (int k = 0; k < D; ++k)
+      if (!(m.upper[k] > m.lower[k]) || m.lower[k] < sc.lower[k] || m.upper[k] > sc.upper[k])
+        r.fail("region_upper", "expected region_lower < region_upper inside the domain on every axis (axis " +
+                                   std::to_string(k) + ")");
+    const std::string axes[3] = {"x", "y", "z"};
+    const std::string axis = r.choice("flow_axis", {"x", "y", "z"}, axes[D - 1]);
+    m.flow_axis = static_cast<int>(std::find(axes, axes + 3, axis) - axes);
+    if (m.flow_axis >= D) r.fail("flow_axis", "expected an axis of this " + std::to_string(D) + "D case");
+    // Lattice neighbours (1 and sqrt(2) spacings) connect; a one-particle water film (2) does not.
+    m.percolation_distance = r.positive("percolation_distance", 1.5 * o.spacing);
+    if (!c.two_phase && r.has("percolation_distance"))
+      r.fail("percolation_distance", "expected a case with a liquid and a gas");
+    r.finish();
+  }
   {
     const toml::node* g = top.node("geometry");
     if (!g) top.fail("geometry", "missing required array of tables [[geometry]]");
@@ -226,8 +270,30 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     for (const auto& e : *arr) {
       CaseReader r(*e.as_table(), file, "geometry[" + std::to_string(idx++) + "]");
       GeometryShape s;
-      s.kind = r.choice("shape", {"box", "sphere"}) == "sphere" ? GeometryShape::Kind::Sphere : GeometryShape::Kind::Box;
-      if (s.kind == GeometryShape::Kind::Box) {
+      const std::string shape = r.choice("shape", {"box", "sphere", "grain_pack"});
+      s.kind = shape == "sphere" ? GeometryShape::Kind::Sphere
+               : shape == "grain_pack" ? GeometryShape::Kind::GrainPack : GeometryShape::Kind::Box;
+      if (s.kind == GeometryShape::Kind::GrainPack) {
+        GrainPackSpec& p = s.pack;
+        p.lower = r.vec<double>("lower", D);
+        p.upper = r.vec<double>("upper", D);
+        for (int k = 0; k < D; ++k)
+          if (!(p.upper[k] > p.lower[k])) r.fail("upper", "expected upper > lower on every axis (axis " + std::to_string(k) + ")");
+        p.grain_radius = r.positive("grain_radius");
+        p.radius_spread = r.non_negative("radius_spread", 0.2);
+        if (p.radius_spread >= 1) r.fail("radius_spread", "expected a fraction of the radius in [0, 1)");
+        p.min_gap = r.non_negative("min_gap", 2 * o.spacing);
+        p.solid_fraction = r.positive("solid_fraction");
+        if (p.solid_fraction > 0.9) r.fail("solid_fraction", "expected a fraction in (0, 0.9]");
+        const long seed = r.integer("seed", 1);
+        if (seed < 0) r.fail("seed", "expected an integer >= 0");
+        p.seed = static_cast<std::uint64_t>(seed);
+        try {
+          s.grains = generate_grain_pack(p, D).grains;
+        } catch (const std::invalid_argument& e) {
+          r.fail("solid_fraction", e.what());
+        }
+      } else if (s.kind == GeometryShape::Kind::Box) {
         s.lower = r.vec<double>("lower", D);
         s.upper = r.vec<double>("upper", D);
       } else {

@@ -9,6 +9,8 @@
 
 #include <toml++/toml.h>
 
+#include "monitors/monitor_region.hpp"
+#include "scene/grain_pack.hpp"
 #include "scene/scene.hpp"
 #include "scene/visualisation_options.hpp"
 
@@ -19,10 +21,12 @@ struct CaseError : std::runtime_error {
 };
 
 struct GeometryShape {
-  enum class Kind { Box, Sphere } kind = Kind::Box;
+  enum class Kind { Box, Sphere, GrainPack } kind = Kind::Box;
   std::array<double, 3> lower{0, 0, 0}, upper{0, 0, 0};  // box
   std::array<double, 3> center{0, 0, 0};                 // sphere
   double radius = 0;
+  GrainPackSpec pack;         // grain pack (its box is pack.lower/upper)
+  std::vector<Grain> grains;  // generated from pack when the case is read
   int material = -1;  // -1: "empty" (removes particles)
   std::array<double, 3> velocity{0, 0, 0};
 };
@@ -42,6 +46,8 @@ struct Case {
   std::vector<GeometryShape> geometry;
   double end_time = 0;
   OutputOptions output;
+  bool two_phase = false;  // a liquid and a gas: the two-phase monitors run (monitors/two_phase.hpp)
+  MonitorRegion monitor_region;
   VisualisationOptions visualisation;
   std::string source_text;  // the resolved case, as TOML
 };

@@ -22,6 +22,11 @@ struct SceneMaterial {
   std::array<double, 3> body_force{0, 0, 0};
 };
 
+struct SceneForceRegion {
+  int material = 0;
+  std::array<double, 3> lower{0, 0, 0}, upper{0, 0, 0}, acceleration{0, 0, 0};
+};
+
 struct SolverOptions {
   KernelType kernel = KernelType::CubicSpline;
   double support_radius = 0;  // m
@@ -50,6 +55,7 @@ struct Scene {
   std::array<double, 3> lower{0, 0, 0}, upper{0, 0, 0};
   std::array<bool, 3> periodic{false, false, false};
   std::vector<SceneMaterial> materials;
+  std::vector<SceneForceRegion> force_regions;
   SolverOptions options;
 
   // Particles, components interleaved (dimension per particle).

@@ -7,6 +7,7 @@ namespace psph {
 namespace {
 
 bool contains(const GeometryShape& s, const double* x, int D) {
+  if (s.kind == GeometryShape::Kind::GrainPack) return in_grain_pack(s.pack, s.grains, x, D);
   if (s.kind == GeometryShape::Kind::Box) {
     for (int k = 0; k < D; ++k)
       if (x[k] < s.lower[k] || x[k] > s.upper[k]) return false;
