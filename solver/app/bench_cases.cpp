@@ -31,6 +31,12 @@ std::vector<BenchSpec> bench_specs(const std::string& backend, bool quick) {
   db.embedded_case = "dam_break_3d";
   db.steps = quick ? 50 : 400;
   s.push_back(db);
+  // Two fluids with surface tension and walls: the colour, normal and curvature passes on top.
+  BenchSpec dr;
+  dr.name = "drainage_2d";
+  dr.embedded_case = "drainage_2d";
+  dr.steps = quick ? 50 : 1000;
+  s.push_back(dr);
   return s;
 }
 

@@ -13,6 +13,7 @@ namespace psph {
 struct StepStats {
   double v_max = 0, a_max = 0, kinetic_energy = 0, density_deviation_max = 0;
   std::string dt_limit;  // which limit set the last step
+  int linear_iterations = 0;  // BiCGSTAB iterations of the last implicit viscous step (0 if explicit)
 };
 
 // Raised when a run goes unstable (NaN, a particle leaving the domain, a collapsing time step).

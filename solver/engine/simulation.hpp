@@ -13,6 +13,7 @@
 #include "fluid/continuity.hpp"
 #include "fluid/density.hpp"
 #include "fluid/momentum.hpp"
+#include "integrate/bicgstab.hpp"
 #include "integrate/kick_drift.hpp"
 #include "interface/surface_tension.hpp"
 #include "integrate/timestep.hpp"
@@ -68,6 +69,27 @@ struct SetWallRestDensity {
   }
 };
 
+// out = a - b on fluid particles, 0 on walls (the rows of the implicit viscous system).
+template <int D>
+struct FluidDifference {
+  Vec<D>* out;
+  const Vec<D>* a;
+  const Vec<D>* b;
+  const std::uint8_t* material;
+  MaterialTable<D> mats;
+  PSPH_HD void operator()(int i) const { out[i] = mats.is_fluid(material[i]) ? a[i] - b[i] : Vec<D>::zero(); }
+};
+template <int D>
+struct SetFluidVelocity {
+  Vec<D>* v;
+  const Vec<D>* from;
+  const std::uint8_t* material;
+  MaterialTable<D> mats;
+  PSPH_HD void operator()(int i) const {
+    if (mats.is_fluid(material[i])) v[i] = from[i];
+  }
+};
+
 template <int D, class B>
 class Simulation final : public Engine {
  public:
@@ -105,6 +127,7 @@ class Simulation final : public Engine {
         mats_.region[r].lower[d] = Real(f.lower[d]), mats_.region[r].upper[d] = Real(f.upper[d]),
         mats_.region[r].acceleration[d] = Real(f.acceleration[d]);
     }
+    if (opt_.implicit_viscosity) nu_max_ = 0;  // no viscous time-step limit
     upload(sc);
     if (opt_.surface_tension > 0) s_.enable_interface();
     bucket_start_.resize(2 * grid_.total), bucket_end_.resize(2 * grid_.total), cell_near_.resize(grid_.total);
@@ -191,6 +214,7 @@ class Simulation final : public Engine {
     st.kinetic_energy = B::template sum_of<Real>(n_, KineticEnergyOf<D>{v, mats_});
     st.density_deviation_max = B::template max_of<Real>(n_, DensityDeviationOf<D>{v, mats_});
     st.dt_limit = dt_limit_;
+    st.linear_iterations = linear_iterations_;
     return st;
   }
 
@@ -205,7 +229,14 @@ class Simulation final : public Engine {
     if (t_ + dt > t_stop) dt = t_stop - t_;
     if (t_ + dt >= t_stop * (1 - 1e-12)) dt = t_stop - t_;  // land exactly on output times
     const ParticleView<D> v = s_.view();
-    if (opt_.integrator == Integrator::VelocityVerlet) {
+    if (opt_.implicit_viscosity) {
+      // Explicit kick with the non-viscous forces, backward-Euler viscous step, drift.
+      B::for_each(n_, KickPass<D>{v, mats_, Real(dt)});
+      viscous_step(dt);
+      continuity_pass();
+      B::for_each(n_, DriftPass<D>{v, grid_, Real(dt), continuity()});
+      evaluate();
+    } else if (opt_.integrator == Integrator::VelocityVerlet) {
       // Kick-drift-kick (eq. 49): a(t) is known from the previous force evaluation.
       B::for_each(n_, KickPass<D>{v, mats_, Real(0.5 * dt)});
       continuity_pass();
@@ -325,6 +356,7 @@ class Simulation final : public Engine {
     fo.artificial_viscosity = Real(opt_.artificial_viscosity);
     fo.smoothing_length = Real(smoothing_length());
     fo.number_density = opt_.density == DensityMethod::NumberSummation;
+    fo.viscosity = !opt_.implicit_viscosity;
     if (opt_.surface_tension > 0) {
       const ParticleView<D> v = s_.view();
       B::for_each(n_, ColourPass<D>{view_nb(), kern_, v, mats_});
@@ -333,6 +365,30 @@ class Simulation final : public Engine {
       fo.surface_tension = Real(opt_.surface_tension);
     }
     B::for_each(n_, FluidForcePass<D>{view_nb(), kern_, s_.view(), mats_, fo});
+  }
+
+  // v <- (I - dt L)^-1 v on the fluid (fluid/viscosity.hpp), L at the current positions with the
+  // walls' no-slip velocities of the last force pass; those move to the right-hand side.
+  void viscous_step(double dt) {
+    const ParticleView<D> v = s_.view();
+    for (auto* a : {&visc_b_, &visc_x_}) a->resize(n_);
+    const bool normalise = opt_.laplacian_correction != LaplacianCorrection::None;
+    auto op = [&](const Vec<D>* in, Vec<D>* out, bool walls) {
+      B::for_each(n_, ImplicitViscosityOperator<D>{view_nb(), kern_, v, mats_, normalise, Real(dt), in, out, walls});
+    };
+    visc_x_.zero();
+    op(visc_x_.data(), visc_b_.data(), true);  // A(0): the walls' part
+    B::for_each(n_, FluidDifference<D>{visc_b_.data(), v.v, visc_b_.data(), v.material, mats_});
+    B::for_each(n_, FluidDifference<D>{visc_x_.data(), v.v, visc_x_.data(), v.material, mats_});  // guess: v
+    const KrylovResult r = krylov_.solve(
+        n_, [&](const Vec<D>* in, Vec<D>* out) { op(in, out, false); }, visc_b_.data(), visc_x_.data(),
+        opt_.implicit_tolerance, 1000);
+    linear_iterations_ = r.iterations;
+    if (!r.converged)
+      throw InstabilityError("the implicit viscous solve did not converge (relative residual " +
+                             std::to_string(r.relative_residual) + " after " + std::to_string(r.iterations) +
+                             " BiCGSTAB iterations) at t = " + std::to_string(t_) + " s, step " + std::to_string(steps_));
+    B::for_each(n_, SetFluidVelocity<D>{v.v, visc_x_.data(), v.material, mats_});
   }
 
   // Neighbours, density (or EOS after continuity), forces at the new positions.
@@ -385,6 +441,9 @@ class Simulation final : public Engine {
   DeviceArray<int, B> nb_index_, nb_count_, nb_fluid_count_;
   int capacity_ = 32;
   DeviceArray<Vec<D>, B> x_build_;  // positions at the last list build
+  BiCGStab<D, B> krylov_;
+  DeviceArray<Vec<D>, B> visc_b_, visc_x_;  // implicit viscous step: right-hand side, solution
+  int linear_iterations_ = 0;
   double list_radius_ = 0;
   int n_ = 0;
   double t_ = 0, dt_ = 0, dt_first_ = 0, c_max_ = 0, nu_max_ = 0, rho_over_sigma_ = 0;

@@ -2,6 +2,7 @@
 // Fluid pair sums, fused in one neighbour loop: pressure force, viscous force, artificial
 // viscosity and XSPH. Gather form: each particle writes only its own outputs.
 #include "fluid/material.hpp"
+#include "fluid/viscosity.hpp"
 #include "interface/surface_tension.hpp"
 #include "kernels/kernel.hpp"
 #include "kernels/laplacian_correction.hpp"
@@ -17,6 +18,7 @@ struct FluidForceOptions {
   Real smoothing_length = 0;         // h_s, for the artificial viscosity
   Real surface_tension = 0;          // sigma; > 0: the interface passes ran (interface/surface_tension.hpp)
   bool number_density = false;       // pressure in the Hu & Adams (2006) volume form (see below)
+  bool viscosity = true;  // false: integrated implicitly instead (the sum still gives lap_v for the walls)
 };
 
 template <int D>
@@ -86,16 +88,10 @@ struct FluidForcePass {
                  ((r * r + Real(0.01) * hs * hs) * (rho_i + rho_j));
       }
       acc -= rij * (pterm * dw_r);
-      // Viscosity, Morris form with harmonic-mean viscosity (eqs. 55/56). A wall takes the fluid's
-      // viscosity (digest §7 item 16), so fluid-wall pairs reduce to eq. 55, and presents its
-      // no-slip velocity (boundary/wall_velocity.hpp).
+      // Viscosity (fluid/viscosity.hpp); a wall presents its no-slip velocity (boundary/wall_velocity.hpp).
       const Vec<D> vij_visc = fluid_j ? vij : v_i - s.v_noslip[j];
-      const Real mu_j = fluid_j ? mats[mj].viscosity : mu_i;
-      const Real mu_sum = mu_i + mu_j;
-      if (mu_sum > Real(0)) {
-        const Real w = tensor ? LaplacianTensor<D>::weight(A, rij) : Real(1);
-        visc += vij_visc * (Real(4) * mu_i * mu_j / mu_sum * V_j * inv_rho_i * dw_r * w);
-      }
+      const Real w = tensor ? LaplacianTensor<D>::weight(A, rij) : Real(1);
+      visc += vij_visc * (viscous_pair_coefficient(mu_i, fluid_j ? mats[mj].viscosity : mu_i, V_j, inv_rho_i, dw_r) * w);
       lambda -= V_j * r * r * dw_r;
       // XSPH over the same material, with the kernel factor restored (eq. 76, digest §7 item 2).
       if (opt.xsph > Real(0) && mj == mi) xs -= vij * (Real(2) * m_j / (rho_i + rho_j) * kern.W(r));
@@ -103,7 +99,7 @@ struct FluidForcePass {
 
     if (!tensor && opt.laplacian != LaplacianCorrection::None && lambda > Real(0)) visc *= Real(D) / lambda;
     if (opt.surface_tension > Real(0)) acc += surface_tension_acceleration(s, i, opt.surface_tension);
-    s.a[i] = acc + visc + mats.body_force_at(mi, s.x[i]);
+    s.a[i] = acc + (opt.viscosity ? visc : Vec<D>::zero()) + mats.body_force_at(mi, s.x[i]);
     s.lap_v[i] = mu_i > Real(0) ? visc * (rho_i / mu_i) : Vec<D>::zero();
     s.v_xsph[i] = xs * opt.xsph;
   }

@@ -203,6 +203,11 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     o.fixed_dt = r.non_negative("dt", 0.0);
     o.neighbour_skin = r.non_negative("neighbour_skin", 0.1);
     o.max_density_deviation = r.non_negative("max_density_deviation", 0.0);
+    o.implicit_viscosity = r.boolean("implicit_viscosity", false);
+    o.implicit_tolerance = r.positive("implicit_tolerance", 1e-6);
+    if (o.implicit_tolerance >= 1) r.fail("implicit_tolerance", "expected a relative residual in (0, 1)");
+    if (o.implicit_viscosity && o.laplacian_correction == LaplacianCorrection::Tensor)
+      r.fail("laplacian_correction", "expected \"trace\" or \"none\" with implicit_viscosity = true (the tensor form is explicit only)");
     const double p_b = r.non_negative("background_pressure", 0.0);
     for (auto& m : sc.materials) m.props.background_pressure = Real(p_b);
     if (o.neighbour_skin > 1) r.fail("neighbour_skin", "expected a fraction of the support radius in [0, 1]");
@@ -219,7 +224,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       for (const auto& m : sc.materials) {
         c_max = std::max(c_max, double(m.props.sound_speed));
         if (m.props.kind != MaterialKind::Fluid) continue;
-        nu_max = std::max(nu_max, double(m.props.viscosity / m.props.rest_density));
+        if (!o.implicit_viscosity) nu_max = std::max(nu_max, double(m.props.viscosity / m.props.rest_density));
         rho_min = rho_min > 0 ? std::min(rho_min, double(m.props.rest_density)) : double(m.props.rest_density);
       }
       const double hs = o.support_radius / support_per_smoothing_length(o.kernel);

@@ -45,6 +45,10 @@ struct SolverOptions {
   double fixed_dt = 0;        // > 0: constant step instead of the adaptive one
   double min_dt_ratio = 1e-4; // a step below this fraction of the first step is a collapse
   double max_density_deviation = 0;  // > 0: |rho/rho0 - 1| of a fluid particle that stops a run
+  // Backward-Euler viscous step solved by BiCGSTAB (fluid/viscosity.hpp, integrate/bicgstab.hpp):
+  // no viscous time-step limit.
+  bool implicit_viscosity = false;
+  double implicit_tolerance = 1e-6;  // relative residual of the viscous solve
   // Two fluids ([interface]): interface/surface_tension.hpp.
   double surface_tension = 0;   // sigma (N/m); 0 = no colour, normal or curvature pass
   double normal_threshold = 0.01;  // a normal is reliable when |grad c| > this / smoothing length

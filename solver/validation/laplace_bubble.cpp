@@ -9,16 +9,27 @@
 
 namespace psph {
 
-Case laplace_bubble_case(double radius_spacings, const std::string& kernel, double support_spacings) {
+Case laplace_bubble_case(double radius_spacings, const std::string& kernel, double support_spacings, int dimension) {
   toml::table tbl = toml::parse(embedded_case_text("laplace_bubble_2d"), std::string_view("cases/laplace_bubble_2d.toml"));
   const double dx = 1e-4, R = radius_spacings * dx;
-  const double L = dx * std::max(24.0, std::ceil(4 * radius_spacings));
-  set_case_value(tbl, "domain.upper", toml::array{L, L});
+  const double L = dx * std::max(dimension == 3 ? 16.0 : 24.0, std::ceil(4 * radius_spacings));
+  auto point = [&](double v) {
+    toml::array a;
+    for (int k = 0; k < dimension; ++k) a.push_back(v);
+    return a;
+  };
+  set_case_value(tbl, "case.dimension", toml::value<int64_t>(dimension));
+  set_case_value(tbl, "domain.lower", point(0.0));
+  set_case_value(tbl, "domain.upper", point(L));
+  toml::array periodic;
+  for (int k = 0; k < dimension; ++k) periodic.push_back(true);
+  set_case_value(tbl, "domain.periodic", periodic);
   set_case_value(tbl, "discretisation.kernel", toml::value<std::string>(kernel));
   set_case_value(tbl, "discretisation.support_radius", toml::value<double>(support_spacings * dx));
   auto& geometry = *tbl["geometry"].as_array();
-  geometry.at(0).as_table()->insert_or_assign("upper", toml::array{L, L});
-  geometry.at(1).as_table()->insert_or_assign("center", toml::array{L / 2, L / 2});
+  geometry.at(0).as_table()->insert_or_assign("lower", point(0.0));
+  geometry.at(0).as_table()->insert_or_assign("upper", point(L));
+  geometry.at(1).as_table()->insert_or_assign("center", point(L / 2));
   geometry.at(1).as_table()->insert_or_assign("radius", R);
   Case c = parse_case(tbl, "cases/laplace_bubble_2d.toml");
   build_particles(c);

@@ -8,10 +8,11 @@
 
 namespace psph {
 
-// The 2D case with a bubble of `radius_spacings` spacings in a periodic cell of 4 R (at least
-// 24 spacings) per side; the kernel and its support radius (in spacings) as given.
+// The case with a bubble of `radius_spacings` spacings in a periodic cell of 4 R (at least
+// 24 spacings in 2D, 16 in 3D) per side; the kernel and its support radius (in spacings) as
+// given; `dimension` 2 (a disc, sigma / R) or 3 (a sphere, 2 sigma / R).
 Case laplace_bubble_case(double radius_spacings, const std::string& kernel = "quintic_spline",
-                         double support_spacings = 3);
+                         double support_spacings = 3, int dimension = 2);
 
 struct BubbleMeasurement {
   double radius = 0;          // m, from the gas volume

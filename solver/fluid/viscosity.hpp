@@ -1,0 +1,59 @@
+#pragma once
+// The viscous term of the momentum equation, shared by the explicit force pass (fluid/momentum.hpp)
+// and the implicit (backward Euler) operator below.
+#include "fluid/material.hpp"
+#include "kernels/kernel.hpp"
+#include "kernels/laplacian_correction.hpp"
+#include "neighbours/neighbour_list.hpp"
+#include "state/particles.hpp"
+
+namespace psph {
+
+// Coefficient of (v_i - v_j) in the viscous acceleration of i: Morris form with the harmonic-mean
+// viscosity (Pazdniakou eqs. 55-57), 4 mu_i mu_j / (mu_i + mu_j) V_j / rho_i F_ij. A wall takes
+// the fluid's viscosity (digest §7 item 16), so fluid-wall pairs reduce to eq. 55.
+PSPH_HD inline Real viscous_pair_coefficient(Real mu_i, Real mu_j, Real V_j, Real inv_rho_i, Real F_ij) {
+  const Real mu_sum = mu_i + mu_j;
+  return mu_sum > Real(0) ? Real(4) * mu_i * mu_j / mu_sum * V_j * inv_rho_i * F_ij : Real(0);
+}
+
+// out = (I - dt L) in over the fluid particles (0 on walls), L the viscous operator of the force
+// pass with the trace-normalised Laplacian (or none): the matrix of a backward-Euler viscous step
+// (Ghaitanellis 2017 §3, implicit viscosity). `walls`: wall neighbours present their no-slip
+// velocity (the inhomogeneous part); without it they present zero, which makes the map linear.
+template <int D>
+struct ImplicitViscosityOperator {
+  NeighbourList<D> nb;
+  Kernel<D> kern;
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  bool normalise;  // trace-normalised Laplacian (kernels/laplacian_correction.hpp)
+  Real dt;
+  const Vec<D>* in;
+  Vec<D>* out;
+  bool walls;
+  PSPH_HD void operator()(int i) const {
+    const int mi = s.material[i];
+    if (!mats.is_fluid(mi)) {
+      out[i] = Vec<D>::zero();
+      return;
+    }
+    const Real mu_i = mats[mi].viscosity, inv_rho_i = Real(1) / s.rho[i];
+    const Vec<D> u_i = in[i];
+    Vec<D> lap = Vec<D>::zero();
+    Real lambda = 0;
+    nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
+      if (!(r > Real(0))) return;
+      const int mj = s.material[j];
+      const bool fluid_j = mats.is_fluid(mj);
+      const Real V_j = s.m[j] / s.rho[j], F = kern.F(r);
+      const Vec<D> u_j = fluid_j ? in[j] : walls ? s.v_noslip[j] : Vec<D>::zero();
+      lap += (u_i - u_j) * viscous_pair_coefficient(mu_i, fluid_j ? mats[mj].viscosity : mu_i, V_j, inv_rho_i, F);
+      lambda -= V_j * r * r * F;
+    });
+    if (normalise && lambda > Real(0)) lap *= Real(D) / lambda;
+    out[i] = u_i - lap * dt;
+  }
+};
+
+}  // namespace psph
