@@ -120,18 +120,22 @@ struct CurvaturePass {
     if (mats.is_fluid(s.material[i]) && norm2(u_i) > Real(0)) {
       const Real w0 = kern.W(Real(0)) * s.m[i] / s.rho[i];
       Real div = 0, cover = w0, shepard = w0, m2 = 0;
+      bool wall = false;
       nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
         const Real V_j = s.m[j] / s.rho[j];
         const Real vw = V_j * kern.W(r);
         shepard += vw;  // all neighbours, walls included: the kernel's second moment
         m2 += vw * r * r;
+        wall |= !mats.is_fluid(s.material[j]);
         if (!mats.is_fluid(s.material[j]) || !(r > Real(0))) return;
         const Vec<D> u_j = reliable_unit_normal(s.colour_gradient[j], threshold);
         if (!(norm2(u_j) > Real(0))) return;
         div += V_j * dot(u_j - u_i, rij) * kern.F(r);
         cover += vw;
       });
-      kappa = interface_curvature<D>(-div / cover, s.colour[i], m2 / (Real(D) * shepard));
+      // Within a wall's reach the colour mixes in the wall's cos(theta) and no longer measures the
+      // distance to the interface: the particle's own curvature is kept there.
+      kappa = wall ? -div / cover : interface_curvature<D>(-div / cover, s.colour[i], m2 / (Real(D) * shepard));
     }
     s.curvature[i] = kappa;
   }

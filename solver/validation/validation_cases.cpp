@@ -6,6 +6,7 @@
 #include "scene/case_file.hpp"
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
+#include "validation/capillary_entry.hpp"
 #include "validation/channel_flow.hpp"
 #include "validation/laplace_bubble.hpp"
 #include "validation/operator_checks.hpp"
@@ -146,6 +147,30 @@ std::vector<ValidationRecord> contact_angle_2d(const ValidationContext& ctx) {
   return out;
 }
 
+// Capillary entry (ours): below the Young-Laplace entry pressure the meniscus bulges into the slit
+// by at most w/2 (a half-disc) plus a spacing; above it the gas runs into the slit, past w. The
+// bracket 0.9 / 1.1 is the 10 %. Recorded as the depth reached over the slit width.
+std::vector<ValidationRecord> capillary_entry(const ValidationContext& ctx) {
+  std::vector<ValidationRecord> out;
+  for (double ratio : {0.9, 1.1}) {
+    const Case c = capillary_entry_case(ratio);
+    const EntryResult r = run_capillary_entry(c, ctx.backend);
+    const double depth = r.depth / r.width;
+    std::ostringstream metric;
+    metric << "gas depth in the slit / w at " << ratio << " x the entry pressure ("
+           << (ratio < 1 ? "stays out: <= 0.5 + 1 spacing" : "enters: > 1") << ")";
+    const double bound = 0.5 + c.scene.options.spacing / r.width;
+    // The error is how far the depth is on the wrong side of its bound (in widths; 0 passes).
+    const double err = std::max(0.0, ratio < 1 ? depth - bound : 1 - depth);
+    out.push_back(make_record("capillary_entry_2d", metric.str(), depth, ratio < 1 ? bound : 1.0, err, 0.0));
+    if (ctx.log)
+      *ctx.log << "  drive " << r.drive << " Pa = " << ratio << " x entry pressure " << r.entry_pressure
+               << " Pa: gas reached " << depth << " w into the slit; " << r.particles << " particles, " << r.steps
+               << " steps, " << r.seconds << " s\n";
+  }
+  return out;
+}
+
 }  // namespace
 
 const std::vector<ValidationCase>& validation_cases() {
@@ -173,6 +198,8 @@ const std::vector<ValidationCase>& validation_cases() {
        [](const ValidationContext& ctx) {
          return laplace(ctx, 3, ctx.full ? std::vector<double>{4, 6, 8} : std::vector<double>{4});
        }},
+      {"capillary_entry_2d", "gas entering a water-filled slit: Young-Laplace entry pressure within 10 % (ours)",
+       capillary_entry},
       {"sessile_drop_2d", "static contact angle of a 2D drop on a flat wall, 30-150 degrees (ours: 5 degrees)",
        contact_angle_2d},
   };
