@@ -129,12 +129,8 @@ TwoPhaseSample sample_two_phase(const Scene& sc, const MonitorRegion& region, co
   return s;
 }
 
-TwoPhaseMonitor::TwoPhaseMonitor(const Scene& sc, const MonitorRegion& region) : sc_(sc), region_(region) {
-  double mu = 0;
-  for (const auto& m : sc.materials)
-    if (m.props.kind == MaterialKind::Fluid && m.props.colour > 0) mu = std::max(mu, double(m.props.viscosity));
-  if (sc.options.surface_tension > 0 && mu > 0) capillary_speed_ = sc.options.surface_tension / mu;
-}
+TwoPhaseMonitor::TwoPhaseMonitor(const Scene& sc, const MonitorRegion& region)
+    : sc_(sc), region_(region), capillary_speed_(capillary_speed(sc)) {}
 
 std::vector<std::string> TwoPhaseMonitor::columns() const {
   const char* axes = "xyz";

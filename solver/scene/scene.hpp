@@ -1,6 +1,7 @@
 #pragma once
 // Host-side description of a run, independent of dimension and backend: what the scene builder
 // produces from a case file and what an engine is created from.
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -68,5 +69,14 @@ struct Scene {
 
   int count() const { return static_cast<int>(material.size()); }
 };
+
+// sigma / mu_liquid, the velocity scale of capillary flow (spurious currents are measured in it);
+// 0 without surface tension or a viscous liquid.
+inline double capillary_speed(const Scene& sc) {
+  double mu = 0;
+  for (const auto& m : sc.materials)
+    if (m.props.kind == MaterialKind::Fluid && m.props.colour > 0) mu = std::max(mu, double(m.props.viscosity));
+  return sc.options.surface_tension > 0 && mu > 0 ? sc.options.surface_tension / mu : 0.0;
+}
 
 }  // namespace psph

@@ -39,14 +39,11 @@ Case laplace_bubble_case(double radius_spacings, const std::string& kernel, doub
 BubbleMeasurement measure_bubble(const Case& c, const std::string& backend) {
   const Scene& sc = c.scene;
   const int D = sc.dimension;
-  double mu_liquid = 0;
-  for (const auto& m : sc.materials)
-    if (m.props.kind == MaterialKind::Fluid && m.props.colour > 0) mu_liquid = m.props.viscosity;
   const auto t0 = std::chrono::steady_clock::now();
   auto engine = make_engine(sc, backend);
   BubbleMeasurement out;
   out.particles = engine->particles();
-  out.capillary_speed = sc.options.surface_tension / mu_liquid;
+  out.capillary_speed = capillary_speed(sc);
   const double t_end = c.end_time, support = sc.options.support_radius;
   const int samples = 10;
   for (int k = 0; k <= samples; ++k) {

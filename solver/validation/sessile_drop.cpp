@@ -58,14 +58,11 @@ std::vector<double> fit_circle(const std::vector<double>& xy) {
 ContactAngle measure_contact_angle(const Case& c, const std::string& backend) {
   const Scene& sc = c.scene;
   const int D = sc.dimension;
-  double mu = 0;
-  for (const auto& m : sc.materials)
-    if (m.props.kind == MaterialKind::Fluid && m.props.colour > 0) mu = m.props.viscosity;
   const auto t0 = std::chrono::steady_clock::now();
   auto engine = make_engine(sc, backend);
   ContactAngle out;
   out.particles = engine->particles();
-  out.capillary_speed = sc.options.surface_tension / mu;
+  out.capillary_speed = capillary_speed(sc);
   const double support = sc.options.support_radius;
   const int samples = 10;
   for (int k = 0; k <= samples; ++k) {
