@@ -51,14 +51,14 @@ class BiCGStab {
     KrylovResult res;
     const double b_norm = std::sqrt(dot_(b, b));
     if (b_norm == 0) {
-      comb(x, b, 0, b, 0, b, 0);
+      B::fill_zero(x, sizeof(Vec<D>) * n);
       res.converged = true;
       return res;
     }
     apply(x, t);
     comb(r, b, 1, t, -1, t, 0);  // r = b - A x
-    comb(r0, r, 1, r, 0, r, 0);
-    comb(p, r, 0, r, 0, r, 0), comb(v, r, 0, r, 0, r, 0);
+    B::copy(r0, r, sizeof(Vec<D>) * n);
+    p_.zero(), v_.zero();
     double rho = 1, alpha = 1, omega = 1;
     res.relative_residual = std::sqrt(dot_(r, r)) / b_norm;
     for (; res.iterations < max_iterations && res.relative_residual > tolerance; ++res.iterations) {

@@ -6,13 +6,10 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "state/derived_fields.hpp"
+
 namespace psph {
 namespace {
-
-bool is_gas(const Scene& sc, double mat) {
-  const Material& m = sc.materials[static_cast<int>(mat)].props;
-  return m.kind == MaterialKind::Fluid && m.colour < 0;
-}
 
 bool inside(const MonitorRegion& r, const double* x, int D) {
   for (int k = 0; k < D; ++k)
@@ -109,7 +106,7 @@ TwoPhaseSample sample_two_phase(const Scene& sc, const MonitorRegion& region, co
   for (int i = 0; i < n; ++i) {
     if (sc.materials[static_cast<int>(material[i])].props.kind != MaterialKind::Fluid) continue;
     if (!inside(region, &x[i * D], D)) continue;
-    const int g = is_gas(sc, material[i]) ? 1 : 0;
+    const int g = phase_of(sc.materials[static_cast<int>(material[i])].props) == Phase::Gas ? 1 : 0;
     if (g) gas.push_back(i);
     vol[g] += volume[i];
     pv[g] += volume[i] * p[i];

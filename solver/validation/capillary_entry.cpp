@@ -7,6 +7,7 @@
 #include "engine/engine.hpp"
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
+#include "state/derived_fields.hpp"
 
 namespace psph {
 namespace {
@@ -64,7 +65,7 @@ EntryResult run_capillary_entry(const Case& c, const std::string& backend) {
   for (int i = 0; i < engine->particles(); ++i) {
     const Material& m = sc.materials[static_cast<int>(mat[i])].props;
     const double xi = x[i * D], yi = x[i * D + 1];
-    if (m.kind == MaterialKind::Fluid && m.colour < 0 && xi > slit.x0 && xi < slit.x1 && yi < slit.mouth)
+    if (phase_of(m) == Phase::Gas && xi > slit.x0 && xi < slit.x1 && yi < slit.mouth)
       out.depth = std::max(out.depth, slit.mouth - yi);
   }
   out.steps = engine->steps();
