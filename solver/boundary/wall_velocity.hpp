@@ -12,6 +12,9 @@
 //               v_f - (lap v)_f (n . r_wf)^2 / 4, with n the wall normal (direction to the fluid)
 //               and lap v the fluid's velocity Laplacian from the previous force pass. Exact for a
 //               quadratic profile normal to a flat wall (our choice; references silent).
+//   free_slip:  v_w = sum_f v_f W_wf / sum_f W_wf: the walls present the fluid's own velocity, so
+//               they exert no shear (Adami, Hu & Adams 2012 §2.3's slip condition).
+#include "boundary/wall_normal.hpp"
 #include "fluid/material.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
@@ -19,7 +22,7 @@
 
 namespace psph {
 
-enum class WallNoSlip { Prescribed = 0, Mirror = 1, Curved = 2 };
+enum class WallNoSlip { Prescribed = 0, Mirror = 1, Curved = 2, FreeSlip = 3 };
 
 template <int D>
 struct WallVelocityPass {
@@ -34,12 +37,7 @@ struct WallVelocityPass {
       s.v_noslip[i] = s.v[i];
       return;
     }
-    Vec<D> normal = Vec<D>::zero();
-    if (mode == WallNoSlip::Curved) {
-      nb.for_each_fluid(i, [&](int, const Vec<D>& rij, Real r) PSPH_PAIR { normal -= rij * kern.W(r); });  // towards the fluid
-      const Real len = norm(normal);
-      normal *= len > Real(0) ? Real(1) / len : Real(0);
-    }
+    const Vec<D> normal = mode == WallNoSlip::Curved ? wall_normal_towards_fluid(nb, kern, i) : Vec<D>::zero();
     Vec<D> sum = Vec<D>::zero();
     Real wsum = 0;
     nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
@@ -48,7 +46,9 @@ struct WallVelocityPass {
       sum += (s.v[j] - s.lap_v[j] * (Real(0.25) * dn * dn)) * w;
       wsum += w;
     });
-    s.v_noslip[i] = wsum > Real(0) ? s.v[i] * Real(2) - sum * (Real(1) / wsum) : s.v[i];
+    if (!(wsum > Real(0))) s.v_noslip[i] = s.v[i];
+    else if (mode == WallNoSlip::FreeSlip) s.v_noslip[i] = sum * (Real(1) / wsum);
+    else s.v_noslip[i] = s.v[i] * Real(2) - sum * (Real(1) / wsum);
   }
 };
 

@@ -17,6 +17,7 @@
 #include "integrate/bicgstab.hpp"
 #include "integrate/kick_drift.hpp"
 #include "interface/surface_tension.hpp"
+#include "interface/wall_wetting.hpp"
 #include "integrate/timestep.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/fluid_proximity.hpp"
@@ -296,9 +297,20 @@ class Simulation final : public Engine {
     fo.viscosity = !opt_.implicit_viscosity;
     if (opt_.surface_tension > 0) {
       const ParticleView<D> v = s_.view();
-      B::for_each(n_, ColourPass<D>{view_nb(), kern_, v, mats_});
-      B::for_each(n_, NormalPass<D>{view_nb(), kern_, v, mats_});
-      B::for_each(n_, CurvaturePass<D>{view_nb(), kern_, v, mats_, Real(opt_.normal_threshold / smoothing_length())});
+      if (opt_.geometric_wetting && has_walls_) {
+        B::for_each(n_, ColourPass<D>{view_nb(), kern_, v, mats_, WallColour::FluidOnly});
+        B::for_each(n_, NormalPass<D>{view_nb(), kern_, v, mats_, WallColour::FluidOnly});
+        for (int k = 0; k < 2; ++k) {
+          B::for_each(n_, WallWettingPass<D>{view_nb(), kern_, v, mats_});
+          B::for_each(n_, ColourPass<D>{view_nb(), kern_, v, mats_, WallColour::NearWallsAgain});
+          B::for_each(n_, NormalPass<D>{view_nb(), kern_, v, mats_, WallColour::NearWallsAgain});
+        }
+      } else {
+        B::for_each(n_, ColourPass<D>{view_nb(), kern_, v, mats_, WallColour::Constant});
+        B::for_each(n_, NormalPass<D>{view_nb(), kern_, v, mats_, WallColour::Constant});
+      }
+      B::for_each(n_, CurvaturePass<D>{view_nb(), kern_, v, mats_, Real(opt_.normal_threshold / smoothing_length()),
+                                          opt_.geometric_wetting});
       fo.surface_tension = Real(opt_.surface_tension);
     }
     B::for_each(n_, FluidForcePass<D>{view_nb(), kern_, s_.view(), mats_, fo});

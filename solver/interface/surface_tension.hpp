@@ -4,11 +4,12 @@
 // +1 liquid, -1 gas, cos(theta) for a wall (eq. 10: theta measured through the liquid, so a wall
 // of colour +1 is fully wetted by the liquid). Three passes, run only when a case has two fluids:
 //   ColourPass     c_i = sum_j V_j c_j W_ij / sum_j V_j W_ij      (eq. 58, Shepard-normalised,
-//                  digest §7 item 8); walls keep their constant colour cos(theta).
+//                  digest §7 item 8); walls keep their constant colour cos(theta), or with
+//                  geometric wetting the colour extrapolated from the fluid (wall_wetting.hpp).
 //   NormalPass     n_i = sum_j V_j (c_j - c_i) grad_i W_ij        (eq. 59a: points gas -> liquid)
 //   CurvaturePass  div n^_i = sum_j N_ij V_j (n^_j - n^_i) . grad_i W_ij / sum_j N_ij V_j W_ij
 //                  over pairs whose normals are both reliable (|n| > eps / h_s, N_ij = 1; Morris
-//                  2000 eqs. 24-25); walls present no normal. The curvature is then carried from
+//                  2000 eqs. 24-25); walls present a normal only with geometric wetting. The curvature is then carried from
 //                  the particle's own level set to the interface (interface_curvature below).
 // The force per unit volume is F_s = 1/2 sigma kappa n with kappa = -div n^ (eqs. 7, 9). The paper's
 // eq. 60 expands to +div n^, the opposite sign (digest §7 item 5); -div n^ is the one for which
@@ -21,25 +22,43 @@
 
 namespace psph {
 
+// How the colour and normal passes treat walls. Wall colour (Pazdniakou eq. 10): walls are in every
+// sum with their constant colour cos(theta). Geometric wetting (wall_wetting.hpp): the colour and
+// the normals are first summed over fluids only; the walls then take the colour extrapolated from
+// them, and the colour and normals of fluid particles with walls in reach are summed again with
+// the walls (twice: the one-sided fluid sums place a tilted interface off by about a tenth of the
+// support, which the walls' first colour inherits).
+enum class WallColour { Constant, FluidOnly, NearWallsAgain };
+
+template <int D>
+PSPH_HD inline bool colour_pass_skips(const NeighbourList<D>& nb, WallColour walls, bool fluid, int i) {
+  return walls == WallColour::NearWallsAgain && !(fluid && nb.lists_non_fluid(i));
+}
+
 template <int D>
 struct ColourPass {
   NeighbourList<D> nb;
   Kernel<D> kern;
   ParticleView<D> s;
   MaterialTable<D> mats;
+  WallColour walls;
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
+    if (colour_pass_skips(nb, walls, mats.is_fluid(mi), i)) return;
     if (!mats.is_fluid(mi)) {
-      s.colour[i] = mats[mi].colour;
+      if (walls == WallColour::Constant) s.colour[i] = mats[mi].colour;
       return;
     }
     const Real w0 = kern.W(Real(0)) * s.m[i] / s.rho[i];
     Real num = w0 * mats[mi].colour, den = w0;
-    nb.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
+    auto add = [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
       const Real vw = s.m[j] / s.rho[j] * kern.W(r);
-      num += vw * mats[s.material[j]].colour;
+      const int mj = s.material[j];  // walls: cos(theta), or their extrapolated colour
+      num += vw * (walls == WallColour::NearWallsAgain && !mats.is_fluid(mj) ? s.colour[j] : mats[mj].colour);
       den += vw;
-    });
+    };
+    if (walls == WallColour::FluidOnly) nb.for_each_fluid(i, add);
+    else nb.for_each(i, add);
     s.colour[i] = num / den;
   }
 };
@@ -50,13 +69,18 @@ struct NormalPass {
   Kernel<D> kern;
   ParticleView<D> s;
   MaterialTable<D> mats;
+  WallColour walls;
   PSPH_HD void operator()(int i) const {
+    const bool fluid = mats.is_fluid(s.material[i]);
+    if (colour_pass_skips(nb, walls, fluid, i)) return;
     Vec<D> n = Vec<D>::zero();
-    if (mats.is_fluid(s.material[i])) {
+    if (fluid) {
       const Real c_i = s.colour[i];
-      nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
+      auto add = [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
         if (r > Real(0)) n += rij * (s.m[j] / s.rho[j] * (s.colour[j] - c_i) * kern.F(r));
-      });
+      };
+      if (walls == WallColour::FluidOnly) nb.for_each_fluid(i, add);
+      else nb.for_each(i, add);
     }
     s.colour_gradient[i] = n;
   }
@@ -114,6 +138,7 @@ struct CurvaturePass {
   ParticleView<D> s;
   MaterialTable<D> mats;
   Real threshold;  // eps / h_s
+  bool walls_extend_colour;  // geometric wetting: the colour near walls still measures the distance
   PSPH_HD void operator()(int i) const {
     Real kappa = 0;
     const Vec<D> u_i = reliable_unit_normal(s.colour_gradient[i], threshold);
@@ -127,15 +152,15 @@ struct CurvaturePass {
         shepard += vw;  // all neighbours, walls included: the kernel's second moment
         m2 += vw * r * r;
         wall |= !mats.is_fluid(s.material[j]);
-        if (!mats.is_fluid(s.material[j]) || !(r > Real(0))) return;
+        if (!(r > Real(0))) return;
         const Vec<D> u_j = reliable_unit_normal(s.colour_gradient[j], threshold);
         if (!(norm2(u_j) > Real(0))) return;
         div += V_j * dot(u_j - u_i, rij) * kern.F(r);
         cover += vw;
       });
-      // Within a wall's reach the colour mixes in the wall's cos(theta) and no longer measures the
-      // distance to the interface: the particle's own curvature is kept there.
-      kappa = wall ? -div / cover : interface_curvature<D>(-div / cover, s.colour[i], m2 / (Real(D) * shepard));
+      // Within a wall's reach a constant wall colour cos(theta) mixes in and the colour no longer
+      // measures the distance to the interface: the particle's own curvature is kept there.
+      kappa = wall && !walls_extend_colour ? -div / cover : interface_curvature<D>(-div / cover, s.colour[i], m2 / (Real(D) * shepard));
     }
     s.curvature[i] = kappa;
   }

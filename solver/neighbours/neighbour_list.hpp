@@ -29,6 +29,7 @@ struct NeighbourList {
   PSPH_HD void for_each_fluid(int i, F&& f) const {
     visit(i, 0, fluid_count[i], f);
   }
+  PSPH_HD bool lists_non_fluid(int i) const { return count[i] > fluid_count[i]; }
 
  private:
   template <class F>

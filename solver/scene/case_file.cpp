@@ -159,6 +159,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     CaseReader r(top.table("interface", false), file, "interface");
     o.surface_tension = r.non_negative("surface_tension", 0.0);
     o.normal_threshold = r.positive("normal_threshold", 0.01);
+    o.geometric_wetting = r.choice("wetting", {"geometric", "wall_colour"}, "geometric") == "geometric";
     if (o.surface_tension > 0 && !(has_liquid && has_gas))
       r.fail("surface_tension", "expected a case with a liquid and a gas (materials with phase = \"gas\")");
     if (o.surface_tension > 0 && !walls_without_angle.empty())
@@ -184,8 +185,11 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
                                               : DensityMethod::Summation;
     o.integrator = r.choice("integrator", {"velocity_verlet", "leapfrog"}, "velocity_verlet") == "leapfrog"
                        ? Integrator::Leapfrog : Integrator::VelocityVerlet;
-    const std::string ns = r.choice("wall_noslip", {"curved", "mirror", "prescribed"}, "curved");
-    o.wall_noslip = ns == "prescribed" ? WallNoSlip::Prescribed : ns == "mirror" ? WallNoSlip::Mirror : WallNoSlip::Curved;
+    const std::string ns = r.choice("wall_noslip", {"curved", "mirror", "prescribed", "free_slip"}, "curved");
+    o.wall_noslip = ns == "prescribed" ? WallNoSlip::Prescribed
+                    : ns == "mirror"   ? WallNoSlip::Mirror
+                    : ns == "free_slip" ? WallNoSlip::FreeSlip
+                                        : WallNoSlip::Curved;
     {
       const std::string lc = r.choice("laplacian_correction", {"trace", "tensor", "none"}, "trace");
       o.laplacian_correction = lc == "tensor" ? LaplacianCorrection::Tensor

@@ -53,6 +53,7 @@ struct SolverOptions {
   // Two fluids ([interface]): interface/surface_tension.hpp.
   double surface_tension = 0;   // sigma (N/m); 0 = no colour, normal or curvature pass
   double normal_threshold = 0.01;  // a normal is reliable when |grad c| > this / smoothing length
+  bool geometric_wetting = true;   // walls' colour extrapolated (interface/wall_wetting.hpp), else cos(theta)
 };
 
 struct Scene {

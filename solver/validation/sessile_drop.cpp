@@ -13,7 +13,7 @@ Case sessile_drop_case(double contact_angle_deg, double initial_angle_deg, doubl
   toml::table tbl = toml::parse(embedded_case_text("sessile_drop_2d"), std::string_view("cases/sessile_drop_2d.toml"));
   set_case_value(tbl, "materials.wall.contact_angle", toml::value<double>(contact_angle_deg));
   // A cap of angle a and radius R has the area R^2 (a - sin a cos a); the half-disc's is pi R0^2 / 2.
-  const double a = initial_angle_deg * M_PI / 180, R0 = radius_spacings * 1e-4, wall = 3e-4;
+  const double a = initial_angle_deg * M_PI / 180, R0 = radius_spacings * 1e-4, wall = 6e-4;
   const double R = R0 * std::sqrt(M_PI / 2 / (a - std::sin(a) * std::cos(a)));
   auto& geometry = *tbl["geometry"].as_array();
   auto& drop = *geometry.at(1).as_table();
