@@ -10,6 +10,7 @@
 //                 231:7057, eq. 27), and rho_w from the EOS inverted at p_w: the wall carries the
 //                 fluid's pressure plus the body-force head, so it holds any sustained load.
 //                 Walls here are fixed or move at constant velocity (a_w = 0).
+#include "fluid/eos.hpp"
 #include "fluid/material.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
@@ -18,17 +19,6 @@
 namespace psph {
 
 enum class WallPressure { Summation = 0, Extrapolated = 1 };
-
-// rho from p for material `mat` (inverse of fluid/eos.hpp).
-PSPH_HD inline Real density_from_pressure(const Material& mat, Real p_abs, Real rho0) {
-  const Real p = p_abs - mat.background_pressure;
-  const Real c2 = mat.sound_speed * mat.sound_speed;
-  if (mat.eos == EquationOfState::Tait) {
-    const Real base = Real(1) + p * mat.tait_gamma / (rho0 * c2);
-    return rho0 * pow(base > Real(1e-6) ? base : Real(1e-6), Real(1) / mat.tait_gamma);
-  }
-  return rho0 + p / c2;
-}
 
 template <int D>
 struct WallPressurePass {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "boundary/open_boundary.hpp"
 #include "boundary/wall_pressure.hpp"
 #include "boundary/wall_velocity.hpp"
 #include "engine/engine.hpp"
@@ -65,6 +66,7 @@ class Simulation final : public Engine {
         mats_.region[r].lower[d] = Real(f.lower[d]), mats_.region[r].upper[d] = Real(f.upper[d]),
         mats_.region[r].acceleration[d] = Real(f.acceleration[d]);
     }
+    if (sc.open_boundary.axis >= 0) set_open_boundary(sc.open_boundary);
     if (opt_.implicit_viscosity) nu_max_ = 0;  // no viscous time-step limit
     upload(sc);
     if (opt_.surface_tension > 0) s_.enable_interface();
@@ -78,6 +80,7 @@ class Simulation final : public Engine {
       B::for_each(n_, SetWallRestDensity<D>{s_.view(), mats_});
       build_neighbours();
     }
+    open_boundary_state();
     force_pass();
   }
 
@@ -167,6 +170,7 @@ class Simulation final : public Engine {
     if (t_ + dt > t_stop) dt = t_stop - t_;
     if (t_ + dt >= t_stop * (1 - 1e-12)) dt = t_stop - t_;  // land exactly on output times
     const ParticleView<D> v = s_.view();
+    open_boundary_velocity();
     if (opt_.implicit_viscosity) {
       // Explicit kick with the non-viscous forces, backward-Euler viscous step, drift.
       B::for_each(n_, KickPass<D>{v, mats_, Real(dt)});
@@ -327,8 +331,8 @@ class Simulation final : public Engine {
     };
     visc_x_.zero();
     op(visc_x_.data(), visc_b_.data(), true);  // A(0): the walls' part
-    B::for_each(n_, FluidDifference<D>{visc_b_.data(), v.v, visc_b_.data(), v.material, mats_});
-    B::for_each(n_, FluidDifference<D>{visc_x_.data(), v.v, visc_x_.data(), v.material, mats_});  // guess: v
+    B::for_each(n_, FluidDifference<D>{visc_b_.data(), v.v, visc_b_.data(), v, mats_});
+    B::for_each(n_, FluidDifference<D>{visc_x_.data(), v.v, visc_x_.data(), v, mats_});  // guess: v
     const KrylovResult r = krylov_.solve(
         n_, [&](const Vec<D>* in, Vec<D>* out) { op(in, out, false); }, visc_b_.data(), visc_x_.data(),
         opt_.implicit_tolerance, 1000);
@@ -337,7 +341,7 @@ class Simulation final : public Engine {
       throw InstabilityError("the implicit viscous solve did not converge (relative residual " +
                              std::to_string(r.relative_residual) + " after " + std::to_string(r.iterations) +
                              " BiCGSTAB iterations) at t = " + std::to_string(t_) + " s, step " + std::to_string(steps_));
-    B::for_each(n_, SetFluidVelocity<D>{v.v, visc_x_.data(), v.material, mats_});
+    B::for_each(n_, SetFluidVelocity<D>{visc_x_.data(), v, mats_});
   }
 
   // Neighbours, density (or EOS after continuity), forces at the new positions.
@@ -345,7 +349,45 @@ class Simulation final : public Engine {
     if (lists_expired()) build_neighbours();
     if (continuity()) B::for_each(n_, EquationOfStatePass<D>{s_.view(), mats_});
     else density_pass();
+    open_boundary_state();
     force_pass();
+  }
+
+  // Open pressure boundaries (boundary/open_boundary.hpp).
+  void set_open_boundary(const SceneOpenBoundary& ob) {
+    OpenBoundaryZone<D>& z = mats_.open;
+    const int a = ob.axis;
+    const Real lo = Real(ob.lower), hi = Real(ob.upper), b = Real(ob.thickness);
+    z.axis = a;
+    z.inlet_lower = ob.inlet_at_lower ? lo : hi - b, z.inlet_upper = ob.inlet_at_lower ? lo + b : hi;
+    z.outlet_lower = ob.inlet_at_lower ? hi - b : lo, z.outlet_upper = ob.inlet_at_lower ? hi : lo + b;
+    z.inlet_pressure = Real(ob.inlet_pressure), z.outlet_pressure = Real(ob.outlet_pressure);
+    z.inlet_material = ob.inlet_material;
+    z.face_band = Real(opt_.support_radius);
+    z.domain_lower = lo;
+  }
+  // Each buffer's velocity gets the correction of the outgoing characteristic with its pressure p_b
+  // imposed (linear acoustics: u - p/(rho c) leaves the interior through the inlet, u + p/(rho c)
+  // through the outlet): du = (p_b - p)/(rho c) at the inlet, (p - p_b)/(rho c) at the outlet, with
+  // p and rho c the means over the interior band next to the buffer. The pressure difference lets
+  // mass in or out until the fluid next to a buffer has the buffer's pressure.
+  void open_boundary_velocity() {
+    if (!mats_.open.active()) return;
+    const ParticleView<D> v = s_.view();
+    Real u_band[2] = {0, 0}, du[2] = {0, 0};
+    for (int b = 0; b < 2; ++b) {
+      const BufferZone z = b == 0 ? BufferZone::Inlet : BufferZone::Outlet;
+      auto sum = [&](BandQuantity q) { return double(B::template sum_of<Real>(n_, BandSum<D>{v, mats_, z, q})); };
+      const double count = sum(BandQuantity::Count);
+      if (count == 0) continue;
+      const double p = sum(BandQuantity::Pressure) / count, impedance = sum(BandQuantity::Impedance) / count;
+      u_band[b] = Real(sum(BandQuantity::Velocity) / count);
+      du[b] = Real((b == 0 ? mats_.open.inlet_pressure - p : p - mats_.open.outlet_pressure) / impedance);
+    }
+    B::for_each(n_, SetBufferVelocity<D>{v, mats_, view_cells(), kern_, {u_band[0], u_band[1]}, {du[0], du[1]}});
+  }
+  void open_boundary_state() {
+    if (mats_.open.active()) B::for_each(n_, SetBufferState<D>{s_.view(), mats_});
   }
 
   double choose_dt() {

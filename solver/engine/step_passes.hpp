@@ -53,24 +53,26 @@ struct SetWallRestDensity {
   }
 };
 
-// out = a - b on fluid particles, 0 on walls (the rows of the implicit viscous system).
+// out = a - b on freely moving fluid particles, 0 on walls and open-boundary buffers (the rows of
+// the implicit viscous system).
 template <int D>
 struct FluidDifference {
   Vec<D>* out;
   const Vec<D>* a;
   const Vec<D>* b;
-  const std::uint8_t* material;
+  ParticleView<D> s;
   MaterialTable<D> mats;
-  PSPH_HD void operator()(int i) const { out[i] = mats.is_fluid(material[i]) ? a[i] - b[i] : Vec<D>::zero(); }
+  PSPH_HD void operator()(int i) const {
+    out[i] = mats.moves_freely(s.material[i], s.x[i]) ? a[i] - b[i] : Vec<D>::zero();
+  }
 };
 template <int D>
 struct SetFluidVelocity {
-  Vec<D>* v;
   const Vec<D>* from;
-  const std::uint8_t* material;
+  ParticleView<D> s;
   MaterialTable<D> mats;
   PSPH_HD void operator()(int i) const {
-    if (mats.is_fluid(material[i])) v[i] = from[i];
+    if (mats.moves_freely(s.material[i], s.x[i])) s.v[i] = from[i];
   }
 };
 

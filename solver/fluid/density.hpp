@@ -1,6 +1,7 @@
 #pragma once
 // Density passes. Sums run over all neighbours of every material (fluid and wall particles alike:
 // the "virtual contribution" that removes the deficit at a material boundary, Pazdniakou §3.1.2).
+#include "boundary/open_boundary.hpp"
 #include "fluid/eos.hpp"
 #include "fluid/material.hpp"
 #include "kernels/kernel.hpp"
@@ -28,7 +29,8 @@ struct NumberDensityPass {
 // particle's density does not take its neighbours' masses, so an interface between fluids of
 // density ratio 1000 stays sharp, digest §7 item 18), or the normalised form
 // rho_i = sum_j m_j W_ij / sum_j W_ij / n_j (eq. 41, needs NumberDensityPass first);
-// then the pressure from the material's equation of state.
+// then the pressure from the material's equation of state. Open-boundary buffer neighbours count
+// with the density of their buffer's pressure (boundary/open_boundary.hpp).
 template <int D>
 struct DensitySummationPass {
   NeighbourList<D> nb;
@@ -44,8 +46,10 @@ struct DensitySummationPass {
     const Real m_i = s.m[i];
     Real num = m_i * w0;
     Real den = normalised ? w0 / s.number_density[i] : Real(1);
+    const bool open = mats.open.active();
     nb.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
-      const Real w = kern.W(r);
+      Real w = kern.W(r);
+      if (open) w *= buffer_density_ratio(mats, s.material[j], s.x[j], s.rho0[j]);
       num += (number ? m_i : s.m[j]) * w;
       if (normalised) den += w / s.number_density[j];
     });

@@ -17,4 +17,15 @@ PSPH_HD inline Real pressure_from_density(const Material& mat, Real rho, Real rh
   return c2 * (rho - rho0) + mat.background_pressure;
 }
 
+// The inverse of pressure_from_density: the density at which material `mat` has pressure p_abs.
+PSPH_HD inline Real density_from_pressure(const Material& mat, Real p_abs, Real rho0) {
+  const Real p = p_abs - mat.background_pressure;
+  const Real c2 = mat.sound_speed * mat.sound_speed;
+  if (mat.eos == EquationOfState::Tait) {
+    const Real base = Real(1) + p * mat.tait_gamma / (rho0 * c2);
+    return rho0 * pow(base > Real(1e-6) ? base : Real(1e-6), Real(1) / mat.tait_gamma);
+  }
+  return rho0 + p / c2;
+}
+
 }  // namespace psph

@@ -2,6 +2,7 @@
 // Material table: each particle carries a material index; the table says what the material is
 // (its kind) and holds its constants. Passed by value to the passes, so it lives in registers or
 // constant cache on the GPU.
+#include "boundary/open_boundary_zone.hpp"
 #include "core/vec.hpp"
 
 namespace psph {
@@ -40,9 +41,12 @@ struct MaterialTable {
   Vec<D> body_force[kMaxMaterials];  // m/s^2, per material
   int region_count = 0;
   ForceRegion<D> region[kMaxForceRegions];
+  OpenBoundaryZone<D> open;  // pressure inlet and outlet buffers (boundary/open_boundary.hpp)
 
   PSPH_HD const Material& operator[](int k) const { return m[k]; }
   PSPH_HD bool is_fluid(int k) const { return m[k].kind == MaterialKind::Fluid; }
+  // A fluid particle that the forces move: not in an open boundary's buffer (whose state is imposed).
+  PSPH_HD bool moves_freely(int k, const Vec<D>& x) const { return is_fluid(k) && open.zone(x) == BufferZone::None; }
   // Body force (m/s^2) on a particle of material k at x: the material's plus its regions'.
   PSPH_HD Vec<D> body_force_at(int k, const Vec<D>& x) const {
     Vec<D> g = body_force[k];

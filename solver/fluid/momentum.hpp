@@ -31,7 +31,6 @@ struct FluidForcePass {
 
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
-    const bool fluid_i = mats.is_fluid(mi);
     const Vec<D> v_i = s.v[i];
     const Real rho_i = s.rho[i];
     const Real inv_rho_i = Real(1) / rho_i;
@@ -48,7 +47,7 @@ struct FluidForcePass {
     // fields on cubic lattices; the tensor form also on sheared ones (kernels/laplacian_correction.hpp).
     Real lambda = 0;
 
-    if (!fluid_i) {
+    if (!mats.moves_freely(mi, s.x[i])) {  // walls and open-boundary buffers
       s.a[i] = Vec<D>::zero();
       s.v_xsph[i] = Vec<D>::zero();
       return;

@@ -17,10 +17,11 @@ PSPH_HD inline Real viscous_pair_coefficient(Real mu_i, Real mu_j, Real V_j, Rea
   return mu_sum > Real(0) ? Real(4) * mu_i * mu_j / mu_sum * V_j * inv_rho_i * F_ij : Real(0);
 }
 
-// out = (I - dt L) in over the fluid particles (0 on walls), L the viscous operator of the force
-// pass with the trace-normalised Laplacian (or none): the matrix of a backward-Euler viscous step
-// (Ghaitanellis 2017 §3, implicit viscosity). `walls`: wall neighbours present their no-slip
-// velocity (the inhomogeneous part); without it they present zero, which makes the map linear.
+// out = (I - dt L) in over the freely moving fluid particles (0 on walls and open-boundary
+// buffers), L the viscous operator of the force pass with the trace-normalised Laplacian (or none):
+// the matrix of a backward-Euler viscous step (Ghaitanellis 2017 §3, implicit viscosity). `walls`:
+// wall and buffer neighbours present their imposed velocity (the inhomogeneous part); without it
+// they present zero, which makes the map linear.
 template <int D>
 struct ImplicitViscosityOperator {
   NeighbourList<D> nb;
@@ -34,7 +35,7 @@ struct ImplicitViscosityOperator {
   bool walls;
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
-    if (!mats.is_fluid(mi)) {
+    if (!mats.moves_freely(mi, s.x[i])) {
       out[i] = Vec<D>::zero();
       return;
     }
@@ -42,12 +43,16 @@ struct ImplicitViscosityOperator {
     const Vec<D> u_i = in[i];
     Vec<D> lap = Vec<D>::zero();
     Real lambda = 0;
-    nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
+    nb.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
       if (!(r > Real(0))) return;
       const int mj = s.material[j];
       const bool fluid_j = mats.is_fluid(mj);
       const Real V_j = s.m[j] / s.rho[j], F = kern.F(r);
-      const Vec<D> u_j = fluid_j ? in[j] : walls ? s.v_noslip[j] : Vec<D>::zero();
+      // Walls present their no-slip velocity, open-boundary buffers their imposed one.
+      const Vec<D> u_j = mats.moves_freely(mj, s.x[j]) ? in[j]
+                         : !walls                      ? Vec<D>::zero()
+                         : fluid_j                     ? s.v[j]
+                                                       : s.v_noslip[j];
       lap += (u_i - u_j) * viscous_pair_coefficient(mu_i, fluid_j ? mats[mj].viscosity : mu_i, V_j, inv_rho_i, F);
       lambda -= V_j * r * r * F;
     });

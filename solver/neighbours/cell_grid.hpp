@@ -128,6 +128,20 @@ struct NeighbourView {
     visit(i, 1, 2, f);
   }
 
+  // Calls f(j, p - x_j, r) for every fluid particle j within the support of a point p. The lists
+  // must be current to within half their skin (as for the particles' own lists).
+  template <class F>
+  PSPH_HD void for_each_fluid_near(const Vec<D>& p, F&& f) const {
+    for_each_cell(p, [&](int key) {
+      const int end = bucket_end[2 * key];
+      for (int j = bucket_start[2 * key]; j < end; ++j) {
+        const Vec<D> d = grid.separation(p, x[j]);
+        const Real r2 = norm2(d);
+        if (r2 < support2) f(j, d, sqrt(r2));
+      }
+    });
+  }
+
  private:
   template <class F>
   PSPH_HD void visit(int i, int first, int last, F& f) const {

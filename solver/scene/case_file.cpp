@@ -155,6 +155,30 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       sc.force_regions.push_back(f);
     }
   }
+  if (top.has("open_boundary")) {
+    // Pressure inlet and outlet buffers across a periodic axis (boundary/open_boundary.hpp).
+    CaseReader r(top.table("open_boundary", false), file, "open_boundary");
+    SceneOpenBoundary& ob = sc.open_boundary;
+    ob.axis = r.axis("axis", D);
+    if (!sc.periodic[ob.axis])
+      r.fail("axis", "expected an axis declared periodic under [domain]: the fluid leaving through the outlet "
+                     "comes back through the inlet as the injected fluid");
+    ob.lower = sc.lower[ob.axis], ob.upper = sc.upper[ob.axis];
+    ob.inlet_at_lower = r.choice("inlet_side", {"lower", "upper"}, "lower") == "lower";
+    ob.inlet_pressure = r.number("inlet_pressure");
+    ob.outlet_pressure = r.number("outlet_pressure");
+    const std::string mname = r.string("inlet_material");
+    if (!mat_index.count(mname) || sc.materials[mat_index[mname]].props.kind != MaterialKind::Fluid)
+      r.fail("inlet_material", "expected the name of a fluid under [materials], got \"" + mname + "\"");
+    ob.inlet_material = mat_index[mname];
+    ob.thickness = r.positive("thickness", o.support_radius);
+    if (ob.thickness < o.support_radius * (1 - 1e-9))
+      r.fail("thickness", "expected a buffer at least one support radius (" + CaseReader::fmt(o.support_radius) +
+                              " m) thick, got " + CaseReader::fmt(ob.thickness));
+    if (2 * ob.thickness + 2 * o.support_radius > ob.upper - ob.lower)
+      r.fail("thickness", "expected the two buffers to leave at least two support radii of domain between them");
+    r.finish();
+  }
   {
     CaseReader r(top.table("interface", false), file, "interface");
     o.surface_tension = r.non_negative("surface_tension", 0.0);
@@ -260,10 +284,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       if (!(m.upper[k] > m.lower[k]) || m.lower[k] < sc.lower[k] || m.upper[k] > sc.upper[k])
         r.fail("region_upper", "expected region_lower < region_upper inside the domain on every axis (axis " +
                                    std::to_string(k) + ")");
-    const std::string axes[3] = {"x", "y", "z"};
-    const std::string axis = r.choice("flow_axis", {"x", "y", "z"}, axes[D - 1]);
-    m.flow_axis = static_cast<int>(std::find(axes, axes + 3, axis) - axes);
-    if (m.flow_axis >= D) r.fail("flow_axis", "expected an axis of this " + std::to_string(D) + "D case");
+    m.flow_axis = r.axis("flow_axis", D, std::string(1, "xyz"[D - 1]));
     // Lattice neighbours (1 and sqrt(2) spacings) connect; a one-particle water film (2) does not.
     m.percolation_distance = r.positive("percolation_distance", 1.5 * o.spacing);
     if (!c.two_phase && r.has("percolation_distance"))

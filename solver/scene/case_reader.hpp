@@ -1,6 +1,7 @@
 #pragma once
 // Strict reader of one case-file table: each key is consumed as it is read; what is left over is
 // an unknown key and rejected. Every error names the file, the dotted key and what was expected.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -86,6 +87,14 @@ class CaseReader {
     std::string list;
     for (const auto& o : options) list += (list.empty() ? "" : ", ") + ("\"" + o + "\"");
     fail(key, "expected one of " + list + ", got \"" + v + "\"", node(key));
+  }
+  // An axis named "x", "y" or "z" of a `dim`-dimensional case, as 0, 1 or 2.
+  int axis(const std::string& key, int dim, std::optional<std::string> def = std::nullopt) {
+    static const std::vector<std::string> names{"x", "y", "z"};
+    const std::string v = choice(key, names, def);
+    const int a = static_cast<int>(std::find(names.begin(), names.end(), v) - names.begin());
+    if (a >= dim) fail(key, "expected an axis of this " + std::to_string(dim) + "D case, got \"" + v + "\"", node(key));
+    return a;
   }
   bool boolean(const std::string& key, bool def) {
     const toml::node* n = node(key);

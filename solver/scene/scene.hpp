@@ -28,6 +28,16 @@ struct SceneForceRegion {
   std::array<double, 3> lower{0, 0, 0}, upper{0, 0, 0}, acceleration{0, 0, 0};
 };
 
+// Open pressure inlet and outlet across a periodic axis (boundary/open_boundary.hpp).
+struct SceneOpenBoundary {
+  int axis = -1;  // -1: none
+  double lower = 0, upper = 0;  // the domain along the axis (m)
+  double thickness = 0;         // of each buffer (m)
+  bool inlet_at_lower = true;
+  double inlet_pressure = 0, outlet_pressure = 0;  // Pa
+  int inlet_material = 0;
+};
+
 struct SolverOptions {
   KernelType kernel = KernelType::CubicSpline;
   double support_radius = 0;  // m
@@ -62,6 +72,7 @@ struct Scene {
   std::array<bool, 3> periodic{false, false, false};
   std::vector<SceneMaterial> materials;
   std::vector<SceneForceRegion> force_regions;
+  SceneOpenBoundary open_boundary;
   SolverOptions options;
 
   // Particles, components interleaved (dimension per particle).

@@ -75,4 +75,51 @@ TwoPhaseChannelErrors two_phase_channel_errors(const Case& c, const std::string&
   return out;
 }
 
+OpenChannelErrors open_channel_errors(const Case& c, const std::string& backend) {
+  const Scene& sc = c.scene;
+  const SceneOpenBoundary& ob = sc.open_boundary;
+  const int D = sc.dimension, flow = ob.axis, samples = 20;
+  double mu = 0;
+  for (const auto& m : sc.materials)
+    if (m.props.kind == MaterialKind::Fluid) mu = m.props.viscosity;
+  const double W = 1e-3, dx = sc.options.spacing;  // walls at x = 0 and x = W, as in the body-force channels
+  const double lo = ob.lower + ob.thickness, hi = ob.upper - ob.thickness, L = hi - lo;
+  const double G = (ob.inlet_pressure - ob.outlet_pressure) / L;
+  OpenChannelErrors out;
+  out.peak = G * W * W / (8 * mu);
+  const int bins = static_cast<int>(std::lround(W / dx));
+  std::vector<double> bin_sum(bins, 0.0), bin_count(bins, 0.0), means;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto engine = make_engine(sc, backend);
+  out.particles = engine->particles();
+  for (int k = 0; k < samples; ++k) {
+    engine->run_until(c.end_time * (0.5 + 0.5 * (k + 1) / samples));
+    const std::vector<double> x = engine->field("position"), v = engine->field("velocity");
+    const std::vector<double> mat = engine->field("material");
+    double sum = 0;
+    int count = 0;
+    for (int i = 0; i < engine->particles(); ++i) {
+      if (sc.materials[static_cast<int>(mat[i])].props.kind != MaterialKind::Fluid) continue;
+      const double y = x[i * D + flow], u = v[i * D + flow];
+      if (y < lo || y >= hi) continue;
+      sum += u, ++count;
+      const int bin = static_cast<int>(std::floor(x[i * D] / dx));
+      if (y > lo + L / 4 && y < hi - L / 4 && bin >= 0 && bin < bins) bin_sum[bin] += u, bin_count[bin] += 1;
+    }
+    means.push_back(count ? sum / count : 0.0);
+  }
+  double mean = 0;
+  for (double m : means) mean += m / samples;
+  for (double m : means) out.flux_spread = std::max(out.flux_spread, std::fabs(m / mean - 1));
+  out.flux_error = mean / (2 * out.peak / 3) - 1;
+  for (int b = 0; b < bins; ++b) {
+    if (bin_count[b] == 0) continue;
+    const double xc = (b + 0.5) * dx, exact = G * xc * (W - xc) / (2 * mu);
+    out.profile_error = std::max(out.profile_error, std::fabs(bin_sum[b] / bin_count[b] - exact) / out.peak);
+  }
+  out.steps = engine->steps();
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
 }  // namespace psph

@@ -32,4 +32,19 @@ struct TwoPhaseChannelErrors {
 };
 TwoPhaseChannelErrors two_phase_channel_errors(const Case& c, const std::string& backend);
 
+// Pressure-driven channel through open boundaries (cases/open_channel_2d.toml): the steady profile
+// u(x) = G x (W - x) / (2 mu), G = (p_inlet - p_outlet) / L over the interior length L between the
+// buffers. The flow rate wavers as particle rows recycle through the buffers, so the velocities are
+// averaged over `samples` states evenly spread over the second half of the run.
+struct OpenChannelErrors {
+  double profile_error = 0;  // max |<u>(x) - u(x)| / u_peak, bins of one spacing, middle half of the interior
+  double flux_error = 0;     // <mean interior velocity> / (2/3 u_peak) - 1, signed
+  double flux_spread = 0;    // max |mean interior velocity / <mean> - 1| over the samples
+  double peak = 0;           // u_peak (m/s)
+  long steps = 0;
+  int particles = 0;
+  double seconds = 0;
+};
+OpenChannelErrors open_channel_errors(const Case& c, const std::string& backend);
+
 }  // namespace psph

@@ -1,0 +1,107 @@
+#pragma once
+// Open pressure inlet and outlet (ours: the references drive a drainage by a body force on the
+// reservoir gas, Pazdniakou 2018 §5.2; this is the alternative with imposed pressures). Two buffer
+// layers, each at least one support radius thick, lie across the ends of a periodic axis
+// (boundary/open_boundary_zone.hpp). Their particles are not moved by forces: they carry their
+// buffer's pressure (and the density the equation of state gives it) and move along the axis with
+// the fluid's velocity at a mirror point inside, corrected by the outgoing characteristic so that
+// mass flows in or out until the fluid next to each buffer has its pressure. Fluid that leaves
+// through the outlet crosses the periodic seam into the inlet buffer and becomes the injected fluid
+// there, so the particle count stays fixed. Validated in cases/open_channel_2d.toml (VALIDATION.md).
+#include "fluid/eos.hpp"
+#include "fluid/material.hpp"
+#include "kernels/kernel.hpp"
+#include "neighbours/cell_grid.hpp"
+#include "state/particles.hpp"
+
+namespace psph {
+
+// rho / rho0 that particle j presents in a density sum: 1, or for a buffer particle the ratio at its
+// buffer's pressure. Buffer particles come through the periodic seam from the outlet at the outlet's
+// spacing; without this the fluid next to the inlet could not reach the inlet's density and pressure
+// (measured in open_channel_2d: the flow fell to 30-60 % of the exact one once rows had recycled).
+template <int D>
+PSPH_HD inline Real buffer_density_ratio(const MaterialTable<D>& mats, int k, const Vec<D>& x, Real rho0) {
+  const BufferZone z = mats.open.zone(x);
+  if (z == BufferZone::None || !mats.is_fluid(k)) return Real(1);
+  return density_from_pressure(mats[k], mats.open.pressure(z), rho0) / rho0;
+}
+
+// Sums over the interior band next to buffer `z` (OpenBoundaryZone::in_band): count, axial
+// velocity, pressure and impedance rho c. (A weight vanishing at the band's edges, to smooth the
+// means as particle rows cross the face, made the flow oscillate by +-60 % instead of +-10 %.)
+enum class BandQuantity : int { Count, Velocity, Pressure, Impedance };
+template <int D>
+struct BandSum {
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  BufferZone z;
+  BandQuantity q;
+  PSPH_HD Real operator()(int i) const {
+    const int k = s.material[i];
+    if (!mats.is_fluid(k) || !mats.open.in_band(s.x[i], z)) return Real(0);
+    switch (q) {
+      case BandQuantity::Velocity: return s.v[i][mats.open.axis];
+      case BandQuantity::Pressure: return s.p[i];
+      case BandQuantity::Impedance: return s.rho[i] * mats[k].sound_speed;
+      default: return Real(1);
+    }
+  }
+};
+
+// At the start of a step: each buffer particle takes, along the axis, the fluid's velocity at its
+// mirror point (Shepard average over the interior fluid within the support there, so the buffers
+// carry the developed profile; the band's mean where no fluid is in reach) plus its buffer's
+// characteristic correction du (Simulation::open_boundary_velocity).
+template <int D>
+struct SetBufferVelocity {
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  NeighbourView<D> cells;
+  Kernel<D> kern;
+  Real u_band[2], du[2];  // inlet, outlet
+  PSPH_HD void operator()(int i) const {
+    if (!mats.is_fluid(s.material[i])) return;
+    const BufferZone z = mats.open.zone(s.x[i]);
+    if (z == BufferZone::None) return;
+    const int b = z == BufferZone::Inlet ? 0 : 1;
+    const int axis = mats.open.axis;
+    Real sum = 0, weight = 0;
+    cells.for_each_fluid_near(mats.open.mirror(s.x[i]), [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
+      if (mats.open.zone(s.x[j]) != BufferZone::None) return;
+      const Real w = kern.W(r);
+      sum += w * s.v[j][axis], weight += w;
+    });
+    Vec<D> v = Vec<D>::zero();
+    v[axis] = (weight > Real(0) ? sum / weight : u_band[b]) + du[b];
+    s.v[i] = v;
+    s.v_xsph[i] = Vec<D>::zero();
+  }
+};
+
+// After the density pass: a fluid particle in the inlet buffer becomes the inlet's material (its
+// volume m / rho0 kept), and every buffer particle takes its buffer's pressure and the density at
+// that pressure.
+template <int D>
+struct SetBufferState {
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  PSPH_HD void operator()(int i) const {
+    int k = s.material[i];
+    if (!mats.is_fluid(k)) return;
+    const BufferZone z = mats.open.zone(s.x[i]);
+    if (z == BufferZone::None) return;
+    if (z == BufferZone::Inlet && k != mats.open.inlet_material) {
+      k = mats.open.inlet_material;
+      const Real rho0 = mats[k].rest_density;
+      s.m[i] *= rho0 / s.rho0[i];
+      s.rho0[i] = rho0;
+      s.material[i] = static_cast<std::uint8_t>(k);
+    }
+    const Real p = mats.open.pressure(z);
+    s.p[i] = p;
+    s.rho[i] = density_from_pressure(mats[k], p, s.rho0[i]);
+  }
+};
+
+}  // namespace psph

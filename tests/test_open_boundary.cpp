@@ -1,0 +1,108 @@
+// Open pressure inlet and outlet (boundary/open_boundary.hpp) on the channel of
+// cases/open_channel_2d.toml: the case keys, the buffers' imposed state, and the inlet injecting
+// its own fluid once the outlet's fluid has come round through the periodic seam.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "case_text.hpp"
+#include "engine/engine.hpp"
+#include "scene/embedded_cases.hpp"
+
+using namespace psph;
+using psph::test::error_of;
+using psph::test::replaced;
+
+namespace {
+
+const std::string channel = embedded_case_text("open_channel_2d");
+
+// The channel with a gas under [materials] that the inlet injects, at `inlet_pressure`.
+std::string gas_inlet(const std::string& inlet_pressure) {
+  std::string t = replaced(channel, "[materials.wall]",
+                           "[materials.gas]\nkind = \"fluid\"\nphase = \"gas\"\ndensity = 100.0\n"
+                           "viscosity = 1.0e-4\nsound_speed = 0.03\n\n[materials.wall]");
+  t = replaced(t, "inlet_material = \"water\"", "inlet_material = \"gas\"");
+  return replaced(t, "inlet_pressure = 2.8e-3", "inlet_pressure = " + inlet_pressure);
+}
+
+struct Counts {
+  int gas = 0, water_in_inlet = 0;
+};
+
+}  // namespace
+
+TEST(OpenBoundary, CaseKeys) {
+  EXPECT_EQ(error_of(channel), "");
+  EXPECT_NE(error_of(replaced(channel, "periodic = [false, true]", "periodic = [false, false]"))
+                .find("bad.toml: open_boundary.axis: expected an axis declared periodic"),
+            std::string::npos);
+  EXPECT_NE(error_of(replaced(channel, "axis = \"y\"", "axis = \"z\"")).find("expected an axis of this 2D case, got \"z\""),
+            std::string::npos);
+  EXPECT_NE(error_of(replaced(channel, "inlet_material = \"water\"", "inlet_material = \"wall\""))
+                .find("open_boundary.inlet_material: expected the name of a fluid"),
+            std::string::npos);
+  EXPECT_NE(error_of(replaced(channel, "outlet_pressure = 0.0", "outlet_pressure = 0.0\nthickness = 5.0e-5"))
+                .find("open_boundary.thickness: expected a buffer at least one support radius"),
+            std::string::npos);
+  EXPECT_NE(error_of(replaced(channel, "outlet_pressure = 0.0\n", "")).find("open_boundary.outlet_pressure: missing"),
+            std::string::npos);
+}
+
+// At the first evaluation the inlet buffer holds the inlet's fluid (mass scaled by the density
+// ratio, volume kept) at the inlet's pressure, the outlet buffer its own fluid at the outlet's.
+TEST(OpenBoundary, BuffersCarryTheirPressureAndTheInletItsFluid) {
+  Case c = load_case_text(gas_inlet("2.8e-3"), "gas_inlet.toml");
+  build_particles(c);
+  auto e = make_engine(c.scene, "cpu");
+  const std::vector<double> x = e->field("position"), p = e->field("pressure"), mat = e->field("material"),
+                            m = e->field("mass");
+  const double b = 1e-4, top = 3e-3;
+  double water_mass = 0;
+  for (int i = 0; i < e->particles(); ++i)
+    if (c.scene.materials[static_cast<int>(mat[i])].name == "water") water_mass = m[i];
+  int inlet = 0, outlet = 0;
+  for (int i = 0; i < e->particles(); ++i) {
+    const std::string& name = c.scene.materials[static_cast<int>(mat[i])].name;
+    if (name == "wall") continue;
+    const double y = x[2 * i + 1];
+    if (y < b) {
+      ++inlet;
+      EXPECT_EQ(name, "gas");
+      EXPECT_NEAR(m[i], water_mass / 10, 1e-6 * water_mass);
+      EXPECT_NEAR(p[i], 2.8e-3, 1e-9);
+    } else if (y >= top - b) {
+      ++outlet;
+      EXPECT_EQ(name, "water");
+      EXPECT_NEAR(p[i], 0.0, 1e-9);
+    } else {
+      EXPECT_EQ(name, "water");
+    }
+  }
+  EXPECT_EQ(inlet, 40);  // two rows of 20 across the channel
+  EXPECT_EQ(outlet, 40);
+}
+
+// Driven ten times harder, the water leaving through the outlet comes back as gas: gas enters the
+// channel, and the inlet buffer never holds water.
+TEST(OpenBoundary, TheInletInjectsGas) {
+  Case c = load_case_text(gas_inlet("2.8e-2"), "gas_inlet.toml");
+  build_particles(c);
+  auto e = make_engine(c.scene, "cpu");
+  auto count = [&] {
+    const std::vector<double> x = e->field("position"), mat = e->field("material");
+    Counts n;
+    for (int i = 0; i < e->particles(); ++i) {
+      const std::string& name = c.scene.materials[static_cast<int>(mat[i])].name;
+      if (name == "gas") ++n.gas;
+      if (name == "water" && x[2 * i + 1] < 1e-4) ++n.water_in_inlet;
+    }
+    return n;
+  };
+  const Counts first = count();
+  e->run_until(0.4);
+  const Counts last = count();
+  EXPECT_EQ(first.water_in_inlet, 0);
+  EXPECT_EQ(last.water_in_inlet, 0);
+  EXPECT_GT(last.gas, first.gas + 40) << "at least two more rows of gas";
+}
