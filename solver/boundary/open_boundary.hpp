@@ -12,6 +12,7 @@
 #include "fluid/material.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/cell_grid.hpp"
+#include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
 
 namespace psph {
@@ -52,14 +53,25 @@ struct BandSum {
 // At the start of a step: each buffer particle takes, along the axis, the fluid's velocity at its
 // mirror point (Shepard average over the interior fluid within the support there, so the buffers
 // carry the developed profile; the band's mean where no fluid is in reach) plus its buffer's
-// characteristic correction du (Simulation::open_boundary_velocity).
+// characteristic correction du (Simulation::open_boundary_velocity). Its drift correction (the XSPH
+// field, unused in buffers) shifts it down the gradient of the particle concentration,
+// dx = -shift R^2 sum_j V_j grad W_ij per step (particle shifting, Lind et al. 2012, J. Comput.
+// Phys. 231:1499): rows coming round through the seam at the outlet's speed would otherwise pile
+// onto the inlet's rows, where no force separates them.
+// The shift coefficient. Measured: 0 lets drainage_open_2d blow up at 0.03 s, when the first rows
+// of water have come round as gas; 0.01 runs it to the end; 0.03 lowers open_channel_2d's flow rate
+// from -1.8 % to -3.9 % of the exact one.
+constexpr Real kBufferShift = Real(0.01);
+
 template <int D>
 struct SetBufferVelocity {
   ParticleView<D> s;
   MaterialTable<D> mats;
   NeighbourView<D> cells;
+  NeighbourList<D> nb;
   Kernel<D> kern;
   Real u_band[2], du[2];  // inlet, outlet
+  Real shift_per_dt;      // shift / dt
   PSPH_HD void operator()(int i) const {
     if (!mats.is_fluid(s.material[i])) return;
     const BufferZone z = mats.open.zone(s.x[i]);
@@ -75,7 +87,11 @@ struct SetBufferVelocity {
     Vec<D> v = Vec<D>::zero();
     v[axis] = (weight > Real(0) ? sum / weight : u_band[b]) + du[b];
     s.v[i] = v;
-    s.v_xsph[i] = Vec<D>::zero();
+    Vec<D> grad_c = Vec<D>::zero();
+    nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
+      if (r > Real(0)) grad_c += rij * (s.m[j] / s.rho[j] * kern.F(r));
+    });
+    s.v_xsph[i] = grad_c * (-shift_per_dt * kern.support * kern.support);
   }
 };
 

@@ -32,9 +32,13 @@ struct OpenBoundaryZone {
     if (z == BufferZone::None) return x;
     const bool inlet = z == BufferZone::Inlet;
     const Real lo = inlet ? inlet_lower : outlet_lower, hi = inlet ? inlet_upper : outlet_upper;
-    // The interior lies above a buffer at the domain's lower end, below one at its upper end.
-    x[axis] = lo <= domain_lower ? hi + face_band : lo - face_band;
+    x[axis] = inward(z) > 0 ? hi + face_band : lo - face_band;
     return x;
+  }
+  // The direction along the axis from buffer z into the interior: +1 for the buffer at the domain's
+  // lower end, -1 for the one at its upper end.
+  PSPH_HD Real inward(BufferZone z) const {
+    return (z == BufferZone::Inlet ? inlet_lower : outlet_lower) <= domain_lower ? Real(1) : Real(-1);
   }
   // Whether an interior point lies within face_band of buffer z's inner face.
   PSPH_HD bool in_band(const Vec<D>& x, BufferZone z) const {
@@ -42,8 +46,7 @@ struct OpenBoundaryZone {
     const Real c = x[axis];
     const bool inlet = z == BufferZone::Inlet;
     const Real lo = inlet ? inlet_lower : outlet_lower, hi = inlet ? inlet_upper : outlet_upper;
-    // The interior lies above a buffer at the domain's lower end, below one at its upper end.
-    const Real d = lo <= domain_lower ? c - hi : lo - c;
+    const Real d = inward(z) > 0 ? c - hi : lo - c;
     return d >= Real(0) && d < face_band;
   }
 };

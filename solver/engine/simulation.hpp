@@ -170,7 +170,7 @@ class Simulation final : public Engine {
     if (t_ + dt > t_stop) dt = t_stop - t_;
     if (t_ + dt >= t_stop * (1 - 1e-12)) dt = t_stop - t_;  // land exactly on output times
     const ParticleView<D> v = s_.view();
-    open_boundary_velocity();
+    open_boundary_velocity(dt);
     if (opt_.implicit_viscosity) {
       // Explicit kick with the non-viscous forces, backward-Euler viscous step, drift.
       B::for_each(n_, KickPass<D>{v, mats_, Real(dt)});
@@ -367,11 +367,11 @@ class Simulation final : public Engine {
     z.domain_lower = lo;
   }
   // Each buffer's velocity gets the correction of the outgoing characteristic with its pressure p_b
-  // imposed (linear acoustics: u - p/(rho c) leaves the interior through the inlet, u + p/(rho c)
-  // through the outlet): du = (p_b - p)/(rho c) at the inlet, (p - p_b)/(rho c) at the outlet, with
-  // p and rho c the means over the interior band next to the buffer. The pressure difference lets
-  // mass in or out until the fluid next to a buffer has the buffer's pressure.
-  void open_boundary_velocity() {
+  // imposed (linear acoustics: u_n - p/(rho c) is carried from the interior into the buffer, u_n the
+  // velocity along the buffer's inward normal n): du_n = (p_b - p)/(rho c), with p and rho c the
+  // means over the interior band next to the buffer. The pressure difference lets mass in or out
+  // until the fluid next to a buffer has the buffer's pressure.
+  void open_boundary_velocity(double dt) {
     if (!mats_.open.active()) return;
     const ParticleView<D> v = s_.view();
     Real u_band[2] = {0, 0}, du[2] = {0, 0};
@@ -382,9 +382,10 @@ class Simulation final : public Engine {
       if (count == 0) continue;
       const double p = sum(BandQuantity::Pressure) / count, impedance = sum(BandQuantity::Impedance) / count;
       u_band[b] = Real(sum(BandQuantity::Velocity) / count);
-      du[b] = Real((b == 0 ? mats_.open.inlet_pressure - p : p - mats_.open.outlet_pressure) / impedance);
+      du[b] = Real(mats_.open.inward(z) * (mats_.open.pressure(z) - p) / impedance);
     }
-    B::for_each(n_, SetBufferVelocity<D>{v, mats_, view_cells(), kern_, {u_band[0], u_band[1]}, {du[0], du[1]}});
+    B::for_each(n_, SetBufferVelocity<D>{v, mats_, view_cells(), view_nb(), kern_, {u_band[0], u_band[1]}, {du[0], du[1]},
+                                         Real(kBufferShift / dt)});
   }
   void open_boundary_state() {
     if (mats_.open.active()) B::for_each(n_, SetBufferState<D>{s_.view(), mats_});
