@@ -47,6 +47,9 @@ TEST(OpenBoundary, CaseKeys) {
             std::string::npos);
   EXPECT_NE(error_of(replaced(channel, "outlet_pressure = 0.0\n", "")).find("open_boundary.outlet_pressure: missing"),
             std::string::npos);
+  EXPECT_NE(error_of(replaced(channel, "inlet_pressure = 2.8e-3", "inlet_pressure = nan"))
+                .find("open_boundary.inlet_pressure (line 33): expected a finite pressure"),
+            std::string::npos);
 }
 
 // At the first evaluation the inlet buffer holds the inlet's fluid (mass scaled by the density

@@ -95,25 +95,32 @@ struct SetBufferVelocity {
   }
 };
 
-// After the density pass: a fluid particle in the inlet buffer becomes the inlet's material (its
-// volume m / rho0 kept), and every buffer particle takes its buffer's pressure and the density at
-// that pressure.
+// Before the density pass: a fluid particle in the inlet buffer (one that came round through the
+// seam) becomes the inlet's material, its volume m / rho0 kept.
+template <int D>
+struct ConvertInletFluid {
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  PSPH_HD void operator()(int i) const {
+    const int k = s.material[i], to = mats.open.inlet_material;
+    if (k == to || !mats.is_fluid(k) || mats.open.zone(s.x[i]) != BufferZone::Inlet) return;
+    const Real rho0 = mats[to].rest_density;
+    s.m[i] *= rho0 / s.rho0[i];
+    s.rho0[i] = rho0;
+    s.material[i] = static_cast<std::uint8_t>(to);
+  }
+};
+
+// After the density pass: every buffer particle takes its buffer's pressure and the density at it.
 template <int D>
 struct SetBufferState {
   ParticleView<D> s;
   MaterialTable<D> mats;
   PSPH_HD void operator()(int i) const {
-    int k = s.material[i];
+    const int k = s.material[i];
     if (!mats.is_fluid(k)) return;
     const BufferZone z = mats.open.zone(s.x[i]);
     if (z == BufferZone::None) return;
-    if (z == BufferZone::Inlet && k != mats.open.inlet_material) {
-      k = mats.open.inlet_material;
-      const Real rho0 = mats[k].rest_density;
-      s.m[i] *= rho0 / s.rho0[i];
-      s.rho0[i] = rho0;
-      s.material[i] = static_cast<std::uint8_t>(k);
-    }
     const Real p = mats.open.pressure(z);
     s.p[i] = p;
     s.rho[i] = density_from_pressure(mats[k], p, s.rho0[i]);

@@ -71,6 +71,7 @@ class Simulation final : public Engine {
     upload(sc);
     if (opt_.surface_tension > 0) s_.enable_interface();
     bucket_start_.resize(2 * grid_.total), bucket_end_.resize(2 * grid_.total), cell_near_.resize(grid_.total);
+    if (mats_.open.active()) B::for_each(n_, ConvertInletFluid<D>{s_.view(), mats_});
     if (continuity()) {
       build_neighbours();
       B::for_each(n_, EquationOfStatePass<D>{s_.view(), mats_});
@@ -347,6 +348,7 @@ class Simulation final : public Engine {
   // Neighbours, density (or EOS after continuity), forces at the new positions.
   void evaluate() {
     if (lists_expired()) build_neighbours();
+    if (mats_.open.active()) B::for_each(n_, ConvertInletFluid<D>{s_.view(), mats_});
     if (continuity()) B::for_each(n_, EquationOfStatePass<D>{s_.view(), mats_});
     else density_pass();
     open_boundary_state();
@@ -371,6 +373,7 @@ class Simulation final : public Engine {
   // velocity along the buffer's inward normal n): du_n = (p_b - p)/(rho c), with p and rho c the
   // means over the interior band next to the buffer. The pressure difference lets mass in or out
   // until the fluid next to a buffer has the buffer's pressure.
+  // Runs after choose_dt: the buffers' new velocities differ from the last ones by du << c.
   void open_boundary_velocity(double dt) {
     if (!mats_.open.active()) return;
     const ParticleView<D> v = s_.view();

@@ -48,9 +48,9 @@ struct DensitySummationPass {
     Real den = normalised ? w0 / s.number_density[i] : Real(1);
     const bool open = mats.open.active();
     nb.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
-      Real w = kern.W(r);
-      if (open) w *= buffer_density_ratio(mats, s.material[j], s.x[j], s.rho0[j]);
-      num += (number ? m_i : s.m[j]) * w;
+      const Real w = kern.W(r);
+      const Real ratio = open ? buffer_density_ratio(mats, s.material[j], s.x[j], s.rho0[j]) : Real(1);
+      num += (number ? m_i : s.m[j]) * w * ratio;
       if (normalised) den += w / s.number_density[j];
     });
     const Real rho = num / den;

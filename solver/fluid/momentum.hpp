@@ -50,6 +50,7 @@ struct FluidForcePass {
     if (!mats.moves_freely(mi, s.x[i])) {  // walls and open-boundary buffers
       s.a[i] = Vec<D>::zero();
       s.v_xsph[i] = Vec<D>::zero();
+      s.lap_v[i] = Vec<D>::zero();  // none for walls and buffers (a recycled one kept the outlet's)
       return;
     }
     Mat<D> A = Mat<D>::identity();

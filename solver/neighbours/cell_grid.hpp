@@ -128,8 +128,9 @@ struct NeighbourView {
     visit(i, 1, 2, f);
   }
 
-  // Calls f(j, p - x_j, r) for every fluid particle j within the support of a point p. The lists
-  // must be current to within half their skin (as for the particles' own lists).
+  // Calls f(j, p - x_j, r) for every fluid particle j within the list radius of a point p (callers
+  // weigh by the kernel, zero beyond the support). The cells must be current to within half the
+  // lists' skin, as for the particles' own lists.
   template <class F>
   PSPH_HD void for_each_fluid_near(const Vec<D>& p, F&& f) const {
     for_each_cell(p, [&](int key) {

@@ -167,6 +167,8 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     ob.inlet_at_lower = r.choice("inlet_side", {"lower", "upper"}, "lower") == "lower";
     ob.inlet_pressure = r.number("inlet_pressure");
     ob.outlet_pressure = r.number("outlet_pressure");
+    for (const char* key : {"inlet_pressure", "outlet_pressure"})
+      if (!std::isfinite(r.number(key))) r.fail(key, "expected a finite pressure (Pa)", r.node(key));
     const std::string mname = r.string("inlet_material");
     if (!mat_index.count(mname) || sc.materials[mat_index[mname]].props.kind != MaterialKind::Fluid)
       r.fail("inlet_material", "expected the name of a fluid under [materials], got \"" + mname + "\"");
