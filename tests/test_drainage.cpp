@@ -87,6 +87,11 @@ TEST(ForceRegion, CaseFileErrors) {
   EXPECT_NE(wall.find("body_force_region[0].material: expected the name of a fluid"), std::string::npos) << wall;
   const std::string box = error_of(replaced(text, "lower = [0.0, 7.2e-3]", "lower = [0.0, 9.9e-3]"));
   EXPECT_NE(box.find("body_force_region[0].upper"), std::string::npos) << box;
+  EXPECT_EQ(c.scene.force_regions[0].ramp_time, 0.0);
+  const std::string ramp = "body_force = [0.0, -5.0]\nramp_time = ";
+  EXPECT_EQ(load_case_text(replaced(text, "body_force = [0.0, -5.0]", ramp + "0.1"), "d.toml").scene.force_regions[0].ramp_time, 0.1);
+  const std::string negative = error_of(replaced(text, "body_force = [0.0, -5.0]", ramp + "-0.1"));
+  EXPECT_NE(negative.find("body_force_region[0].ramp_time: expected a finite time >= 0"), std::string::npos) << negative;
 }
 
 TEST(Monitors, RegionAndAxisFromTheCase) {
@@ -150,4 +155,30 @@ TEST(Monitors, SaturationAndPressuresAtStart) {
   EXPECT_TRUE(std::isnan(m.last().pressure_gas));  // no gas in the sample
   EXPECT_LT(m.percolation_time(), 0);
   EXPECT_EQ(cols.back(), "v_max_over_sigma_mu");
+}
+
+// A ramped region starts with no force: at t = 0 the reservoir gas's acceleration lacks the
+// region's whole body force; outside the region only the walls' pressure (which carries the body
+// force of their fluid neighbours) tells the difference, there and next to walls inside.
+TEST(ForceRegion, RampStartsFromZero) {
+  const std::string text = embedded_case_text("drainage_2d");
+  Case full = load_case_text(text, "d.toml"), ramped = load_case_text(text, "d.toml");
+  ramped.scene.force_regions[0].ramp_time = 0.1;
+  build_particles(full), build_particles(ramped);
+  auto a = make_engine(full.scene, "cpu"), b = make_engine(ramped.scene, "cpu");
+  const std::vector<double> x = a->field("position"), mat = a->field("material"),
+                            accel_full = a->field("acceleration"), accel_ramped = b->field("acceleration");
+  const SceneForceRegion& f = full.scene.force_regions[0];
+  int inside = 0, outside = 0;
+  double mean_in = 0, mean_out = 0;
+  for (int i = 0; i < a->particles(); ++i) {
+    const double dy = accel_full[2 * i + 1] - accel_ramped[2 * i + 1];
+    if (static_cast<int>(mat[i]) == f.material && x[2 * i + 1] >= f.lower[1] && x[2 * i + 1] < f.upper[1])
+      ++inside, mean_in += dy;
+    else
+      ++outside, mean_out += std::fabs(dy);
+  }
+  EXPECT_NEAR(mean_in / inside, f.acceleration[1], 0.05 * std::fabs(f.acceleration[1]));
+  EXPECT_LT(mean_out / outside, 0.01 * std::fabs(f.acceleration[1]));
+  EXPECT_GT(inside, 100);
 }

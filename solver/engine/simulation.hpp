@@ -58,14 +58,14 @@ class Simulation final : public Engine {
         rho_over_sigma_ = rho_over_sigma_ > 0 ? std::min(rho_over_sigma_, r) : r;
       }
     }
-    mats_.region_count = static_cast<int>(sc.force_regions.size());
+    regions_ = sc.force_regions;
+    mats_.region_count = static_cast<int>(regions_.size());
     for (int r = 0; r < mats_.region_count; ++r) {
-      const SceneForceRegion& f = sc.force_regions[r];
-      mats_.region[r].material = f.material;
+      mats_.region[r].material = regions_[r].material;
       for (int d = 0; d < D; ++d)
-        mats_.region[r].lower[d] = Real(f.lower[d]), mats_.region[r].upper[d] = Real(f.upper[d]),
-        mats_.region[r].acceleration[d] = Real(f.acceleration[d]);
+        mats_.region[r].lower[d] = Real(regions_[r].lower[d]), mats_.region[r].upper[d] = Real(regions_[r].upper[d]);
     }
+    ramp_body_forces(0);
     if (sc.open_boundary.axis >= 0) set_open_boundary(sc.open_boundary);
     if (opt_.implicit_viscosity) nu_max_ = 0;  // no viscous time-step limit
     upload(sc);
@@ -145,6 +145,7 @@ class Simulation final : public Engine {
       for (const auto& g : c.fields)
         if (g.name == f.info.name) f.from_host_bytes(g.bytes);
     t_ = c.time, dt_ = c.last_dt, dt_first_ = c.first_dt, steps_ = c.steps;
+    ramp_body_forces(t_);
     build_neighbours();
   }
 
@@ -171,6 +172,7 @@ class Simulation final : public Engine {
     if (t_ + dt > t_stop) dt = t_stop - t_;
     if (t_ + dt >= t_stop * (1 - 1e-12)) dt = t_stop - t_;  // land exactly on output times
     const ParticleView<D> v = s_.view();
+    ramp_body_forces(t_ + dt);  // the forces evaluated in this step are those at its end
     open_boundary_velocity(dt);
     if (opt_.implicit_viscosity) {
       // Explicit kick with the non-viscous forces, backward-Euler viscous step, drift.
@@ -317,6 +319,7 @@ class Simulation final : public Engine {
       B::for_each(n_, CurvaturePass<D>{view_nb(), kern_, v, mats_, Real(opt_.normal_threshold / smoothing_length()),
                                           opt_.geometric_wetting});
       fo.surface_tension = Real(opt_.surface_tension);
+      fo.contact_line_force = opt_.contact_line_force && has_walls_;
     }
     B::for_each(n_, FluidForcePass<D>{view_nb(), kern_, s_.view(), mats_, fo});
   }
@@ -346,6 +349,14 @@ class Simulation final : public Engine {
   }
 
   // Neighbours, density (or EOS after continuity), forces at the new positions.
+  // Body-force regions at time t, each scaled by min(1, t / ramp_time): a drive applied quasi-statically.
+  void ramp_body_forces(double t) {
+    for (int r = 0; r < mats_.region_count; ++r) {
+      const double ramp = regions_[r].ramp_time, f = ramp > 0 && t < ramp ? t / ramp : 1.0;
+      for (int d = 0; d < D; ++d) mats_.region[r].acceleration[d] = Real(f * regions_[r].acceleration[d]);
+    }
+  }
+
   void evaluate() {
     if (lists_expired()) build_neighbours();
     if (mats_.open.active()) B::for_each(n_, ConvertInletFluid<D>{s_.view(), mats_});
@@ -430,6 +441,7 @@ class Simulation final : public Engine {
   CellGrid<D> grid_{};
   Kernel<D> kern_{};
   MaterialTable<D> mats_{};
+  std::vector<SceneForceRegion> regions_;  // full body forces of the regions (mats_ holds them ramped)
   ParticleState<D, B> s_;
   DeviceArray<int, B> keys_, perm_, bucket_start_, bucket_end_;
   DeviceArray<std::uint8_t, B> cell_near_;

@@ -3,6 +3,7 @@
 // viscosity and XSPH. Gather form: each particle writes only its own outputs.
 #include "fluid/material.hpp"
 #include "fluid/viscosity.hpp"
+#include "interface/contact_line.hpp"
 #include "interface/surface_tension.hpp"
 #include "kernels/kernel.hpp"
 #include "kernels/laplacian_correction.hpp"
@@ -18,6 +19,7 @@ struct FluidForceOptions {
   Real smoothing_length = 0;         // h_s, for the artificial viscosity
   Real surface_tension = 0;          // sigma; > 0: the interface passes ran (interface/surface_tension.hpp)
   bool number_density = false;       // pressure in the Hu & Adams (2006) volume form (see below)
+  bool contact_line_force = false;   // the unbalanced Young force at contact lines (interface/contact_line.hpp)
   bool viscosity = true;  // false: integrated implicitly instead (the sum still gives lap_v for the walls)
 };
 
@@ -46,6 +48,9 @@ struct FluidForcePass {
     // there. Dividing by lambda_i / D (the trace form) makes the operator exact for quadratic
     // fields on cubic lattices; the tensor form also on sheared ones (kernels/laplacian_correction.hpp).
     Real lambda = 0;
+    ContactLineSum<D> contact;
+    const bool contact_line = opt.surface_tension > Real(0) && opt.contact_line_force && nb.lists_non_fluid(i);
+    const Real colour_i = contact_line ? s.colour[i] : Real(0);
 
     if (!mats.moves_freely(mi, s.x[i])) {  // walls and open-boundary buffers
       s.a[i] = Vec<D>::zero();
@@ -95,10 +100,13 @@ struct FluidForcePass {
       lambda -= V_j * r * r * dw_r;
       // XSPH over the same material, with the kernel factor restored (eq. 76, digest §7 item 2).
       if (opt.xsph > Real(0) && mj == mi) xs -= vij * (Real(2) * m_j / (rho_i + rho_j) * kern.W(r));
+      if (contact_line && !fluid_j) contact.add(V_j, rij, dw_r, kern.W(r), mats[mj].colour);
+      if (contact_line && fluid_j) contact.add_fluid(V_j, rij, dw_r, s.colour[j] - colour_i);
     });
 
     if (!tensor && opt.laplacian != LaplacianCorrection::None && lambda > Real(0)) visc *= Real(D) / lambda;
     if (opt.surface_tension > Real(0)) acc += surface_tension_acceleration(s, i, opt.surface_tension);
+    if (contact_line) acc += contact.acceleration(s.colour_gradient[i], opt.surface_tension, rho_i);
     s.a[i] = acc + (opt.viscosity ? visc : Vec<D>::zero()) + mats.body_force_at(mi, s.x[i]);
     s.lap_v[i] = mu_i > Real(0) ? visc * (rho_i / mu_i) : Vec<D>::zero();
     s.v_xsph[i] = xs * opt.xsph;

@@ -151,6 +151,8 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       for (int k = 0; k < D; ++k)
         if (!(f.upper[k] > f.lower[k])) r.fail("upper", "expected upper > lower on every axis (axis " + std::to_string(k) + ")");
       f.acceleration = r.vec<double>("body_force", D);
+      f.ramp_time = r.number("ramp_time", 0.0);
+      if (!(f.ramp_time >= 0) || !std::isfinite(f.ramp_time)) r.fail("ramp_time", "expected a finite time >= 0 s");
       r.finish();
       sc.force_regions.push_back(f);
     }
@@ -186,6 +188,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     o.surface_tension = r.non_negative("surface_tension", 0.0);
     o.normal_threshold = r.positive("normal_threshold", 0.01);
     o.geometric_wetting = r.choice("wetting", {"geometric", "wall_colour"}, "geometric") == "geometric";
+    o.contact_line_force = r.boolean("contact_line_force", true);
     if (o.surface_tension > 0 && !(has_liquid && has_gas))
       r.fail("surface_tension", "expected a case with a liquid and a gas (materials with phase = \"gas\")");
     if (o.surface_tension > 0 && !walls_without_angle.empty())

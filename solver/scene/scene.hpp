@@ -26,6 +26,7 @@ struct SceneMaterial {
 struct SceneForceRegion {
   int material = 0;
   std::array<double, 3> lower{0, 0, 0}, upper{0, 0, 0}, acceleration{0, 0, 0};
+  double ramp_time = 0;  // s: the force grows linearly from zero over this time (0: full at once)
 };
 
 // Open pressure inlet and outlet across a periodic axis (boundary/open_boundary.hpp).
@@ -64,6 +65,7 @@ struct SolverOptions {
   double surface_tension = 0;   // sigma (N/m); 0 = no colour, normal or curvature pass
   double normal_threshold = 0.01;  // a normal is reliable when |grad c| > this / smoothing length
   bool geometric_wetting = true;   // walls' colour extrapolated (interface/wall_wetting.hpp), else cos(theta)
+  bool contact_line_force = true;  // the unbalanced Young force at contact lines (interface/contact_line.hpp)
 };
 
 struct Scene {
