@@ -91,7 +91,8 @@ TEST(ForceRegion, CaseFileErrors) {
   const std::string ramp = "body_force = [0.0, -5.0]\nramp_time = ";
   EXPECT_EQ(load_case_text(replaced(text, "body_force = [0.0, -5.0]", ramp + "0.1"), "d.toml").scene.force_regions[0].ramp_time, 0.1);
   const std::string negative = error_of(replaced(text, "body_force = [0.0, -5.0]", ramp + "-0.1"));
-  EXPECT_NE(negative.find("body_force_region[0].ramp_time: expected a finite time >= 0"), std::string::npos) << negative;
+  EXPECT_NE(negative.find("body_force_region[0].ramp_time"), std::string::npos) << negative;
+  EXPECT_NE(negative.find("expected a number >= 0"), std::string::npos) << negative;
 }
 
 TEST(Monitors, RegionAndAxisFromTheCase) {

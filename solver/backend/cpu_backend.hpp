@@ -74,15 +74,15 @@ struct CpuBackend {
     // Fixed-order blocked sum, so the result does not depend on the thread count.
     constexpr int block = 4096;
     const int nb = (n + block - 1) / block;
-    std::vector<T> part(static_cast<std::size_t>(nb), T(0));
+    std::vector<T> part(static_cast<std::size_t>(nb), T{});
 #pragma omp parallel for schedule(static)
     for (int b = 0; b < nb; ++b) {
-      T s = T(0);
+      T s = T{};
       const int end = std::min(n, (b + 1) * block);
       for (int i = b * block; i < end; ++i) s += f(i);
       part[static_cast<std::size_t>(b)] = s;
     }
-    T s = T(0);
+    T s = T{};
     for (T v : part) s += v;
     return s;
   }

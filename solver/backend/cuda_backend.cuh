@@ -95,7 +95,7 @@ struct CudaBackend {
   template <class T, class F>
   static T sum_of(int n, const F& f) {
     return thrust::transform_reduce(thrust::device, thrust::counting_iterator<int>(0),
-                                    thrust::counting_iterator<int>(n), ApplyIndex<T, F>{f}, T(0),
+                                    thrust::counting_iterator<int>(n), ApplyIndex<T, F>{f}, T{},
                                     thrust::plus<T>());
   }
 

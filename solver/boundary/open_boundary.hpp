@@ -28,25 +28,35 @@ PSPH_HD inline Real buffer_density_ratio(const MaterialTable<D>& mats, int k, co
   return density_from_pressure(mats[k], mats.open.pressure(z), rho0) / rho0;
 }
 
-// Sums over the interior band next to buffer `z` (OpenBoundaryZone::in_band): count, axial
-// velocity, pressure and impedance rho c. (A weight vanishing at the band's edges, to smooth the
-// means as particle rows cross the face, made the flow oscillate by +-60 % instead of +-10 %.)
-enum class BandQuantity : int { Count, Velocity, Pressure, Impedance };
+// Sums over the interior band next to each buffer (OpenBoundaryZone::in_band), both buffers in one
+// reduction: [buffer][count, axial velocity, pressure, impedance rho c]. (A weight vanishing at the
+// band's edges, to smooth the means as particle rows cross the face, made the flow oscillate by
+// +-60 % instead of +-10 %.)
+struct BandSums {
+  Real q[2][4];
+  PSPH_HD BandSums& operator+=(const BandSums& o) {
+    for (int b = 0; b < 2; ++b)
+      for (int k = 0; k < 4; ++k) q[b][k] += o.q[b][k];
+    return *this;
+  }
+  PSPH_HD friend BandSums operator+(BandSums a, const BandSums& o) { return a += o; }
+};
 template <int D>
 struct BandSum {
   ParticleView<D> s;
   MaterialTable<D> mats;
-  BufferZone z;
-  BandQuantity q;
-  PSPH_HD Real operator()(int i) const {
+  PSPH_HD BandSums operator()(int i) const {
+    BandSums out{};
     const int k = s.material[i];
-    if (!mats.is_fluid(k) || !mats.open.in_band(s.x[i], z)) return Real(0);
-    switch (q) {
-      case BandQuantity::Velocity: return s.v[i][mats.open.axis];
-      case BandQuantity::Pressure: return s.p[i];
-      case BandQuantity::Impedance: return s.rho[i] * mats[k].sound_speed;
-      default: return Real(1);
+    if (!mats.is_fluid(k)) return out;
+    for (int b = 0; b < 2; ++b) {
+      if (!mats.open.in_band(s.x[i], b == 0 ? BufferZone::Inlet : BufferZone::Outlet)) continue;
+      out.q[b][0] = Real(1);
+      out.q[b][1] = s.v[i][mats.open.axis];
+      out.q[b][2] = s.p[i];
+      out.q[b][3] = s.rho[i] * mats[k].sound_speed;
     }
+    return out;
   }
 };
 

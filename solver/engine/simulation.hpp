@@ -389,14 +389,13 @@ class Simulation final : public Engine {
     if (!mats_.open.active()) return;
     const ParticleView<D> v = s_.view();
     Real u_band[2] = {0, 0}, du[2] = {0, 0};
+    const BandSums sums = B::template sum_of<BandSums>(n_, BandSum<D>{v, mats_});
     for (int b = 0; b < 2; ++b) {
+      const Real* q = sums.q[b];
+      if (q[0] == 0) continue;
       const BufferZone z = b == 0 ? BufferZone::Inlet : BufferZone::Outlet;
-      auto sum = [&](BandQuantity q) { return double(B::template sum_of<Real>(n_, BandSum<D>{v, mats_, z, q})); };
-      const double count = sum(BandQuantity::Count);
-      if (count == 0) continue;
-      const double p = sum(BandQuantity::Pressure) / count, impedance = sum(BandQuantity::Impedance) / count;
-      u_band[b] = Real(sum(BandQuantity::Velocity) / count);
-      du[b] = Real(mats_.open.inward(z) * (mats_.open.pressure(z) - p) / impedance);
+      u_band[b] = q[1] / q[0];
+      du[b] = mats_.open.inward(z) * (mats_.open.pressure(z) - q[2] / q[0]) / (q[3] / q[0]);
     }
     B::for_each(n_, SetBufferVelocity<D>{v, mats_, view_cells(), view_nb(), kern_, {u_band[0], u_band[1]}, {du[0], du[1]},
                                          Real(kBufferShift / dt)});

@@ -151,8 +151,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       for (int k = 0; k < D; ++k)
         if (!(f.upper[k] > f.lower[k])) r.fail("upper", "expected upper > lower on every axis (axis " + std::to_string(k) + ")");
       f.acceleration = r.vec<double>("body_force", D);
-      f.ramp_time = r.number("ramp_time", 0.0);
-      if (!(f.ramp_time >= 0) || !std::isfinite(f.ramp_time)) r.fail("ramp_time", "expected a finite time >= 0 s");
+      f.ramp_time = r.non_negative("ramp_time", 0.0);
       r.finish();
       sc.force_regions.push_back(f);
     }
@@ -167,10 +166,13 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
                      "comes back through the inlet as the injected fluid");
     ob.lower = sc.lower[ob.axis], ob.upper = sc.upper[ob.axis];
     ob.inlet_at_lower = r.choice("inlet_side", {"lower", "upper"}, "lower") == "lower";
-    ob.inlet_pressure = r.number("inlet_pressure");
-    ob.outlet_pressure = r.number("outlet_pressure");
-    for (const char* key : {"inlet_pressure", "outlet_pressure"})
-      if (!std::isfinite(r.number(key))) r.fail(key, "expected a finite pressure (Pa)", r.node(key));
+    auto pressure = [&](const char* key) {
+      const double p = r.number(key);
+      if (!std::isfinite(p)) r.fail(key, "expected a finite pressure (Pa)", r.node(key));
+      return p;
+    };
+    ob.inlet_pressure = pressure("inlet_pressure");
+    ob.outlet_pressure = pressure("outlet_pressure");
     const std::string mname = r.string("inlet_material");
     if (!mat_index.count(mname) || sc.materials[mat_index[mname]].props.kind != MaterialKind::Fluid)
       r.fail("inlet_material", "expected the name of a fluid under [materials], got \"" + mname + "\"");
