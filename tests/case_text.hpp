@@ -27,4 +27,11 @@ inline std::string error_of(const std::string& text) {
   return "";
 }
 
+// `text` with `from` replaced by `to` is refused with a message containing `says`.
+inline void expect_refused(const std::string& text, const std::string& from, const std::string& to,
+                           const std::string& says) {
+  const std::string msg = error_of(replaced(text, from, to));
+  EXPECT_NE(msg.find(says), std::string::npos) << msg;
+}
+
 }  // namespace psph::test

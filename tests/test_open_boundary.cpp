@@ -1,16 +1,20 @@
 // Open pressure inlet and outlet (boundary/open_boundary.hpp) on the channel of
-// cases/open_channel_2d.toml: the case keys, the buffers' imposed state, and the inlet injecting
-// its own fluid once the outlet's fluid has come round through the periodic seam.
+// cases/open_channel_2d.toml: the case keys, the buffers' imposed state, the inlet injecting its
+// own fluid once the outlet's fluid has come round through the periodic seam, and the same channel
+// in 3D.
 #include <cmath>
+#include <cstdio>
 
 #include <gtest/gtest.h>
 
 #include "case_text.hpp"
 #include "engine/engine.hpp"
 #include "scene/embedded_cases.hpp"
+#include "validation/channel_flow.hpp"
 
 using namespace psph;
 using psph::test::error_of;
+using psph::test::expect_refused;
 using psph::test::replaced;
 
 namespace {
@@ -34,18 +38,13 @@ struct Counts {
 
 TEST(OpenBoundary, CaseKeys) {
   EXPECT_EQ(error_of(channel), "");
-  // The channel with `from` replaced by `to` is refused with a message containing `says`.
-  auto refused = [](const std::string& from, const std::string& to, const std::string& says) {
-    const std::string msg = error_of(replaced(channel, from, to));
-    EXPECT_NE(msg.find(says), std::string::npos) << msg;
-  };
-  refused("periodic = [false, true]", "periodic = [false, false]", "bad.toml: open_boundary.axis: expected an axis declared periodic");
-  refused("axis = \"y\"", "axis = \"z\"", "expected an axis of this 2D case, got \"z\"");
-  refused("inlet_material = \"water\"", "inlet_material = \"wall\"", "open_boundary.inlet_material: expected the name of a fluid");
-  refused("outlet_pressure = 0.0", "outlet_pressure = 0.0\nthickness = 5.0e-5",
+  expect_refused(channel, "periodic = [false, true]", "periodic = [false, false]", "bad.toml: open_boundary.axis: expected an axis declared periodic");
+  expect_refused(channel, "axis = \"y\"", "axis = \"z\"", "expected an axis of this 2D case, got \"z\"");
+  expect_refused(channel, "inlet_material = \"water\"", "inlet_material = \"wall\"", "open_boundary.inlet_material: expected the name of a fluid");
+  expect_refused(channel, "outlet_pressure = 0.0", "outlet_pressure = 0.0\nthickness = 5.0e-5",
           "open_boundary.thickness: expected a buffer at least one support radius");
-  refused("outlet_pressure = 0.0\n", "", "open_boundary.outlet_pressure: missing");
-  refused("inlet_pressure = 2.8e-3", "inlet_pressure = nan", "open_boundary.inlet_pressure (line 33): expected a finite pressure");
+  expect_refused(channel, "outlet_pressure = 0.0\n", "", "open_boundary.outlet_pressure: missing");
+  expect_refused(channel, "inlet_pressure = 2.8e-3", "inlet_pressure = nan", "open_boundary.inlet_pressure (line 33): expected a finite pressure");
 }
 
 // At the first evaluation the inlet buffer holds the inlet's fluid (mass scaled by the density
@@ -123,4 +122,24 @@ TEST(OpenBoundary, AnInletAtTheUpperEndDrivesTheFlowDown) {
   const double exact_mean = 2.0 / 3.0 * 1.25e-4;
   EXPECT_LT(sum / n, -0.8 * exact_mean);  // 0.4 s: within the first row's crossing, before the wobble
   EXPECT_GT(sum / n, -1.2 * exact_mean);
+}
+
+// The channel in 3D as a slot periodic across z (8 spacings, four supports): the profile between
+// the plates is the plane one, u(x) = G x (W - x) / (2 mu), whatever the third axis.
+TEST(OpenBoundary, AThreeDimensionalSlotCarriesThePlaneProfile) {
+  std::string t = replaced(channel, "dimension = 2", "dimension = 3");
+  t = replaced(t, "lower = [-1.5e-4, 0.0]\nupper = [1.15e-3, 3.0e-3]\nperiodic = [false, true]",
+               "lower = [-1.5e-4, 0.0, 0.0]\nupper = [1.15e-3, 3.0e-3, 4.0e-4]\nperiodic = [false, true, true]");
+  t = replaced(t, "lower = [-1.5e-4, 0.0]\nupper = [1.15e-3, 3.0e-3]\nmaterial = \"wall\"",
+               "lower = [-1.5e-4, 0.0, 0.0]\nupper = [1.15e-3, 3.0e-3, 4.0e-4]\nmaterial = \"wall\"");
+  t = replaced(t, "lower = [0.0, 0.0]\nupper = [1.0e-3, 3.0e-3]\nmaterial = \"water\"",
+               "lower = [0.0, 0.0, 0.0]\nupper = [1.0e-3, 3.0e-3, 4.0e-4]\nmaterial = \"water\"");
+  t = replaced(t, "end = 3.0", "end = 1.5");
+  Case c = load_case_text(t, "open_slot_3d.toml");
+  build_particles(c);
+  const OpenChannelErrors e = open_channel_errors(c, "cpu");
+  std::printf("3D slot: profile %.2f %% of u_peak, flow rate %+.2f %%, samples within %.2f %%; %d particles, %ld steps\n",
+              100 * e.profile_error, 100 * e.flux_error, 100 * e.flux_spread, e.particles, e.steps);
+  EXPECT_LT(e.profile_error, 0.03);
+  EXPECT_LT(std::fabs(e.flux_error), 0.03);
 }

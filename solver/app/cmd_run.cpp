@@ -126,15 +126,22 @@ int drive(Case& c, const RunOptions& opt) {
       rd->log(std::string("warning: no checkpoint: ") + e.what());
     }
   };
+  const bool elastic = std::any_of(c.scene.materials.begin(), c.scene.materials.end(),
+                                   [](const SceneMaterial& m) { return m.props.kind == MaterialKind::Elastic; });
+  if (elastic) rd->add_monitor_columns({"elastic_energy"});
   std::unique_ptr<TwoPhaseMonitor> two_phase;
   if (c.two_phase) {
     two_phase = std::make_unique<TwoPhaseMonitor>(c.scene, c.monitor_region);
     rd->add_monitor_columns(two_phase->columns());
   }
   auto monitor = [&] {
-    if (!two_phase) return rd->monitor(*engine);
+    std::vector<double> extra;
+    if (elastic) extra.push_back(engine->stats().elastic_energy);
+    if (!two_phase) return rd->monitor(*engine, extra);
     const bool before = two_phase->percolation_time() >= 0;
-    rd->monitor(*engine, two_phase->sample(*engine));
+    const std::vector<double> row = two_phase->sample(*engine);
+    extra.insert(extra.end(), row.begin(), row.end());
+    rd->monitor(*engine, extra);
     if (!before && two_phase->percolation_time() >= 0)
       rd->log("gas percolates (joins the inlet and outlet of the monitor region) at t = " +
               std::to_string(two_phase->percolation_time()) + " s, gas saturation " +

@@ -12,6 +12,7 @@ namespace psph {
 
 struct StepStats {
   double v_max = 0, a_max = 0, kinetic_energy = 0, density_deviation_max = 0;
+  double elastic_energy = 0;  // elastic solids (solid/elastic_force.hpp)
   std::string dt_limit;  // which limit set the last step
   int linear_iterations = 0;  // BiCGSTAB iterations of the last implicit viscous step (0 if explicit)
 };

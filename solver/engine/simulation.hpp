@@ -24,6 +24,7 @@
 #include "neighbours/fluid_proximity.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "scene/scene.hpp"
+#include "solid/elastic_force.hpp"
 #include "state/derived_fields.hpp"
 #include "state/particles.hpp"
 
@@ -51,6 +52,8 @@ class Simulation final : public Engine {
       for (int d = 0; d < D; ++d) mats_.body_force[k][d] = Real(sc.materials[k].body_force[d]);
       c_max_ = std::max(c_max_, double(mats_.m[k].sound_speed));
       has_walls_ |= mats_.m[k].kind == MaterialKind::Wall;
+      has_fluid_ |= mats_.m[k].kind == MaterialKind::Fluid;
+      has_elastic_ |= mats_.m[k].kind == MaterialKind::Elastic;
       if (mats_.m[k].kind == MaterialKind::Fluid && mats_.m[k].viscosity > 0)
         nu_max_ = std::max(nu_max_, double(mats_.m[k].viscosity / mats_.m[k].rest_density));
       if (mats_.m[k].kind == MaterialKind::Fluid && opt_.surface_tension > 0) {
@@ -70,7 +73,16 @@ class Simulation final : public Engine {
     if (opt_.implicit_viscosity) nu_max_ = 0;  // no viscous time-step limit
     upload(sc);
     if (opt_.surface_tension > 0) s_.enable_interface();
+    if (has_elastic_) {
+      s_.enable_solid();
+      B::copy(s_.x0.data(), s_.x.data(), sizeof(Vec<D>) * n_);
+    }
     bucket_start_.resize(2 * grid_.total), bucket_end_.resize(2 * grid_.total), cell_near_.resize(grid_.total);
+    if (!has_fluid_) {
+      build_neighbours();
+      solid_pass();
+      return;
+    }
     if (mats_.open.active()) B::for_each(n_, ConvertInletFluid<D>{s_.view(), mats_});
     if (continuity()) {
       build_neighbours();
@@ -156,6 +168,7 @@ class Simulation final : public Engine {
     st.a_max = B::template max_of<Real>(n_, AccelerationOf<D>{v});
     st.kinetic_energy = B::template sum_of<Real>(n_, KineticEnergyOf<D>{v, mats_});
     st.density_deviation_max = B::template max_of<Real>(n_, DensityDeviationOf<D>{v, mats_});
+    if (has_elastic_) st.elastic_energy = B::template sum_of<Real>(n_, ElasticEnergyOf<D>{v, mats_});
     st.dt_limit = dt_limit_;
     st.linear_iterations = linear_iterations_;
     return st;
@@ -244,7 +257,7 @@ class Simulation final : public Engine {
     for (;;) {
       if (nb_index_.size() < std::size_t(capacity_) * n_) nb_index_.resize(std::size_t(capacity_) * n_);
       B::for_each(n_, BuildNeighbourList<D>{view_cells(), s_.material.data(), mats_, s_.near_fluid.data(),
-                                            !continuity(), nb_index_.data(), nb_count_.data(),
+                                            !continuity(), !has_fluid_, nb_index_.data(), nb_count_.data(),
                                             nb_fluid_count_.data(), capacity_, list_stride_i(), list_stride_k()});
       const int most = n_ ? B::template max_of<int>(n_, ListCount<D>{nb_count_.data()}) : 0;
       if (most <= capacity_) return;
@@ -324,6 +337,13 @@ class Simulation final : public Engine {
     B::for_each(n_, FluidForcePass<D>{view_nb(), kern_, s_.view(), mats_, fo});
   }
 
+  // Elastic solids (solid/elastic_force.hpp): displacements, then the elastic acceleration.
+  void solid_pass() {
+    B::for_each(n_, DisplacementPass<D>{s_.view(), grid_});
+    if (has_walls_) B::for_each(n_, ClampDisplacementPass<D>{view_nb(), kern_, s_.view(), mats_});
+    B::for_each(n_, ElasticForcePass<D>{view_nb(), kern_, s_.view(), mats_});
+  }
+
   // v <- (I - dt L)^-1 v on the fluid (fluid/viscosity.hpp), L at the current positions with the
   // walls' no-slip velocities of the last force pass; those move to the right-hand side.
   void viscous_step(double dt) {
@@ -359,6 +379,7 @@ class Simulation final : public Engine {
 
   void evaluate() {
     if (lists_expired()) build_neighbours();
+    if (!has_fluid_) return solid_pass();
     if (mats_.open.active()) B::for_each(n_, ConvertInletFluid<D>{s_.view(), mats_});
     if (continuity()) B::for_each(n_, EquationOfStatePass<D>{s_.view(), mats_});
     else density_pass();
@@ -454,7 +475,7 @@ class Simulation final : public Engine {
   int n_ = 0;
   double t_ = 0, dt_ = 0, dt_first_ = 0, c_max_ = 0, nu_max_ = 0, rho_over_sigma_ = 0;
   long steps_ = 0;
-  bool has_walls_ = false;
+  bool has_walls_ = false, has_fluid_ = false, has_elastic_ = false;
   std::string dt_limit_ = "none";
 };
 

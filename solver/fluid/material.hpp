@@ -7,7 +7,7 @@
 
 namespace psph {
 
-enum class MaterialKind : int { Fluid = 0, Wall = 1 };
+enum class MaterialKind : int { Fluid = 0, Wall = 1, Elastic = 2 };
 enum class EquationOfState : int { Linear = 0, Tait = 1 };
 
 struct Material {
@@ -18,6 +18,10 @@ struct Material {
   Real viscosity = 0;        // dynamic viscosity (Pa s); walls take the fluid's (see momentum.hpp)
   Real tait_gamma = 7;
   Real background_pressure = 0;  // Pa, added by the EOS (fluid/eos.hpp); one value for all materials
+  // Elastic solids (solid/elastic_force.hpp): small-strain isotropic moduli, sigma = k tr(eps) I +
+  // 2 mu dev(eps) (Deptulski eq. 2.84); sound_speed is then the P-wave speed sqrt((k + 4 mu/3)/rho).
+  Real bulk_modulus = 0;   // k (Pa)
+  Real shear_modulus = 0;  // mu (Pa)
   // Colour of the continuum surface force (interface/surface_tension.hpp, Pazdniakou eqs. 6, 10):
   // +1 liquid, -1 gas, cos(contact angle) for a wall.
   Real colour = 1;
@@ -45,6 +49,9 @@ struct MaterialTable {
 
   PSPH_HD const Material& operator[](int k) const { return m[k]; }
   PSPH_HD bool is_fluid(int k) const { return m[k].kind == MaterialKind::Fluid; }
+  PSPH_HD bool is_elastic(int k) const { return m[k].kind == MaterialKind::Elastic; }
+  // Particles that the forces move (the others are walls, moved only by their prescribed velocity).
+  PSPH_HD bool is_dynamic(int k) const { return m[k].kind != MaterialKind::Wall; }
   // A fluid particle that the forces move: not in an open boundary's buffer (whose state is imposed).
   PSPH_HD bool moves_freely(int k, const Vec<D>& x) const { return is_fluid(k) && open.zone(x) == BufferZone::None; }
   // Body force (m/s^2) on a particle of material k at x: the material's plus its regions'.

@@ -1,7 +1,7 @@
 #pragma once
 // Kick and drift updates shared by the leapfrog (Pazdniakou eq. 48) and velocity-Verlet
-// (eq. 49, kick-drift-kick form) integrators. Walls are never kicked; they drift with their
-// prescribed velocity (fixed walls have v = 0).
+// (eq. 49, kick-drift-kick form) integrators. Fluids and elastic solids are kicked; walls are
+// not: they drift with their prescribed velocity (fixed walls have v = 0).
 #include <cmath>
 
 #include "fluid/material.hpp"
@@ -16,7 +16,7 @@ struct KickPass {
   MaterialTable<D> mats;
   Real dt;
   PSPH_HD void operator()(int i) const {
-    if (mats.is_fluid(s.material[i])) s.v[i] += s.a[i] * dt;
+    if (mats.is_dynamic(s.material[i])) s.v[i] += s.a[i] * dt;
   }
 };
 
@@ -66,7 +66,7 @@ struct KineticEnergyOf {
   ParticleView<D> s;
   MaterialTable<D> mats;
   PSPH_HD Real operator()(int i) const {
-    return mats.is_fluid(s.material[i]) ? Real(0.5) * s.m[i] * norm2(s.v[i]) : Real(0);
+    return mats.is_dynamic(s.material[i]) ? Real(0.5) * s.m[i] * norm2(s.v[i]) : Real(0);
   }
 };
 // |rho/rho0 - 1| of fluid particles (weak-compressibility monitor).

@@ -47,7 +47,8 @@ struct NeighbourList {
 
 // Fills the lists from the cell list; count[i] may exceed capacity, in which case the caller
 // grows the capacity and builds again. Walls need no list far from the fluid, and near it only
-// their fluid neighbours unless `walls_need_walls` (wall density by summation).
+// their fluid neighbours unless `walls_need_walls` (wall density by summation). Without fluids
+// (`no_fluid`: walls only clamp elastic solids) every wall lists all its neighbours.
 template <int D>
 struct BuildNeighbourList {
   NeighbourView<D> cells;
@@ -55,6 +56,7 @@ struct BuildNeighbourList {
   MaterialTable<D> mats;
   const std::uint8_t* near_fluid;  // per particle (neighbours/fluid_proximity.hpp)
   bool walls_need_walls;
+  bool no_fluid;
   int* index;
   int* count;
   int* fluid_count;
@@ -66,10 +68,10 @@ struct BuildNeighbourList {
       if (n < capacity) row[n * stride_k] = j;
       ++n;
     };
-    const bool fluid = mats.is_fluid(material[i]);
-    if (fluid || near_fluid[i]) cells.for_each_fluid(i, add);
+    const bool full = no_fluid || mats.is_dynamic(material[i]);  // fluids and solids: every neighbour
+    if (full || near_fluid[i]) cells.for_each_fluid(i, add);
     fluid_count[i] = n;
-    if (fluid || (near_fluid[i] && walls_need_walls)) cells.for_each_non_fluid(i, add);
+    if (full || (near_fluid[i] && walls_need_walls)) cells.for_each_non_fluid(i, add);
     count[i] = n;
   }
 };

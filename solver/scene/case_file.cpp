@@ -77,7 +77,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
   // Materials, in file order of their names (toml tables are ordered by key).
   std::map<std::string, int> mat_index;
   std::vector<std::string> walls_without_angle;
-  bool has_liquid = false, has_gas = false;
+  bool has_liquid = false, has_gas = false, has_elastic = false;
   {
     const toml::table& mt = top.table("materials", true);
     if (mt.empty()) top.fail("materials", "expected at least one material");
@@ -88,11 +88,20 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       CaseReader r(*v.as_table(), file, "materials." + name);
       SceneMaterial m;
       m.name = name;
-      const std::string kind = r.choice("kind", {"fluid", "wall"});
-      m.props.kind = kind == "fluid" ? MaterialKind::Fluid : MaterialKind::Wall;
+      const std::string kind = r.choice("kind", {"fluid", "wall", "elastic"});
+      m.props.kind = kind == "fluid" ? MaterialKind::Fluid : kind == "elastic" ? MaterialKind::Elastic : MaterialKind::Wall;
       // A wall's density is optional: by default it is the densest fluid's (set below).
-      m.props.rest_density = (kind == "fluid" || r.has("density")) ? Real(r.positive("density")) : Real(0);
-      if (kind == "fluid") {
+      m.props.rest_density = (kind != "wall" || r.has("density")) ? Real(r.positive("density")) : Real(0);
+      if (kind == "elastic") {
+        // Isotropic moduli from E and nu (Pazdniakou §2.2.1); in 2D, plane strain with these moduli.
+        const double E = r.positive("young_modulus"), nu = r.number("poisson_ratio");
+        if (!(nu > -1 && nu < 0.5)) r.fail("poisson_ratio", "expected a Poisson ratio in (-1, 0.5), got " + CaseReader::fmt(nu));
+        m.props.bulk_modulus = Real(E / (3 * (1 - 2 * nu)));
+        m.props.shear_modulus = Real(E / (2 * (1 + nu)));
+        m.props.sound_speed =
+            Real(std::sqrt((m.props.bulk_modulus + 4 * m.props.shear_modulus / 3) / m.props.rest_density));
+        has_elastic = true;
+      } else if (kind == "fluid") {
         m.props.viscosity = Real(r.non_negative("viscosity"));
         m.props.sound_speed = Real(r.positive("sound_speed"));
         m.props.eos = r.choice("equation_of_state", {"linear", "tait"}, "linear") == "tait" ? EquationOfState::Tait
@@ -119,16 +128,22 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     // Walls take the density of the densest fluid unless given, and the largest sound speed (digest
     // §7 item 17). The densest: a wall's volume m/rho follows its pressure through rho0 + p/c^2, so
     // a wall under water with a gas's rest density would shrink by the water's head over 1 kg/m^3.
-    const SceneMaterial* fluid = nullptr;
+    // Without fluids, walls only clamp an elastic solid and take its density.
+    const bool has_fluid = std::any_of(sc.materials.begin(), sc.materials.end(),
+                                       [](const SceneMaterial& m) { return m.props.kind == MaterialKind::Fluid; });
+    if (has_fluid && has_elastic)
+      top.fail("materials", "expected either fluids or elastic solids: the fluid-solid coupling is not available yet");
+    const MaterialKind bulk = has_elastic ? MaterialKind::Elastic : MaterialKind::Fluid;
+    const SceneMaterial* densest = nullptr;
     for (const auto& m : sc.materials)
-      if (m.props.kind == MaterialKind::Fluid && (!fluid || m.props.rest_density > fluid->props.rest_density)) fluid = &m;
-    if (!fluid) top.fail("materials", "expected at least one material with kind = \"fluid\"");
+      if (m.props.kind == bulk && (!densest || m.props.rest_density > densest->props.rest_density)) densest = &m;
+    if (!densest) top.fail("materials", "expected at least one material with kind = \"fluid\" or \"elastic\"");
     Real c_max = 0;
     for (const auto& m : sc.materials)
-      if (m.props.kind == MaterialKind::Fluid) c_max = std::max(c_max, m.props.sound_speed);
+      if (m.props.kind == bulk) c_max = std::max(c_max, m.props.sound_speed);
     for (auto& m : sc.materials)
       if (m.props.kind == MaterialKind::Wall) {
-        if (m.props.rest_density == Real(0)) m.props.rest_density = fluid->props.rest_density;
+        if (m.props.rest_density == Real(0)) m.props.rest_density = densest->props.rest_density;
         m.props.sound_speed = c_max;
       }
   }

@@ -5,7 +5,7 @@
 
 namespace psph {
 
-// Fills case.scene's particles. Throws CaseError when the geometry yields no fluid particle.
+// Fills case.scene's particles. Throws CaseError when the geometry yields no fluid or elastic particle.
 void build_particles(Case& c);
 
 // A periodic cube of edge `length` filled with one fluid on a lattice of `per_axis` sites per axis,

@@ -10,6 +10,7 @@ Phase phase_of(const Material& m) {
   switch (m.kind) {
     case MaterialKind::Wall: return Phase::Wall;
     case MaterialKind::Fluid: return m.colour < 0 ? Phase::Gas : Phase::Water;
+    case MaterialKind::Elastic: return Phase::Solid;
   }
   return Phase::Wall;
 }

@@ -33,6 +33,9 @@ struct ParticleView {
   Real* colour;             // smoothed colour c (eq. 58)
   Vec<D>* colour_gradient;  // n = grad c (eq. 59a)
   Real* curvature;          // kappa = -div n^ (eqs. 7, 60)
+  // Elastic solids only (null otherwise): solid/elastic_force.hpp.
+  Vec<D>* x0;  // reference (initial) position
+  Vec<D>* u;   // displacement x - x0
 };
 
 template <class T, class B>
@@ -65,7 +68,7 @@ class ParticleState {
     return ParticleView<D>{n_,         x.data(),    v.data(),    a.data(),  v_xsph.data(), v_noslip.data(), lap_v.data(),
                            rho.data(), drho.data(), p.data(),    m.data(),  rho0.data(),
                            number_density.data(),   material.data(), id.data(), near_fluid.data(),
-                           colour.data(), colour_gradient.data(), curvature.data()};
+                           colour.data(), colour_gradient.data(), curvature.data(), x0.data(), u.data()};
   }
 
   // Allocates and registers the interface fields (a case with two fluids and surface tension).
@@ -77,6 +80,16 @@ class ParticleState {
     reg(colour, FieldType::Real, 1, "colour", "-", "smoothed colour function, +1 liquid, -1 gas (Pazdniakou eq. 58)");
     reg(colour_gradient, FieldType::Real, D, "colour_gradient", "1/m", "interface normal n = grad c (eq. 59a)");
     reg(curvature, FieldType::Real, 1, "curvature", "1/m", "interface curvature -div n^ (eqs. 7, 60)");
+  }
+
+  // Allocates and registers the reference positions and displacements (a case with an elastic solid).
+  void enable_solid() {
+    if (solid_) return;
+    solid_ = true;
+    x0.resize(n_), u.resize(n_);
+    u.zero();
+    reg(x0, FieldType::Real, D, "reference_position", "m", "initial position (small-strain reference configuration)");
+    reg(u, FieldType::Real, D, "displacement", "m", "displacement x - x0 of elastic solids");
   }
 
   // Reorders every registered field: field[i] <- field[perm[i]].
@@ -91,6 +104,7 @@ class ParticleState {
   DeviceArray<std::uint8_t, B> near_fluid;  // not registered: recomputed after every reordering
   DeviceArray<Real, B> colour, curvature;     // empty unless enable_interface()
   DeviceArray<Vec<D>, B> colour_gradient;
+  DeviceArray<Vec<D>, B> x0, u;               // empty unless enable_solid()
 
  private:
   template <class T>
@@ -148,7 +162,7 @@ class ParticleState {
   }
 
   int n_ = 0;
-  bool interface_ = false;
+  bool interface_ = false, solid_ = false;
   FieldRegistry registry_;
   DeviceArray<Vec<D>, B> scratch_vec_;
   DeviceArray<Real, B> scratch_real_;

@@ -1,0 +1,100 @@
+#pragma once
+// Small-strain linear elasticity in displacement form (Navier-Cauchy, Pazdniakou eqs. 16-17):
+//   rho a = mu lap(u) + (k + mu/3) grad(div u)
+// with the second derivatives of Pazdniakou eq. 61 (the r^2 fix of digest §2.6) / Deptulski eq. 2.89
+// (the fixes of digest §2.8.3: the cross terms act on u_y, u_z, and the sign):
+//   D_ag(f)_i = sum_j V_j (c e_a e_g - delta_ag) (f_i - f_j) F_ij,   c = d + 2,  e = r_ij / r,
+// F_ij = (dW/dr)/r. Summed over the components this gives, per pair,
+//   mu sum_g D_gg(u_a) + (k + mu/3) sum_g D_ag(u_g)
+//     = V_j F_ij [ (mu (c - d) - (k + mu/3)) du + (k + mu/3) c e (e . du) ],   du = u_i - u_j,
+// a central, antisymmetric pair force: momentum is conserved and the stiffness is symmetric, so
+// the elastic energy is -1/2 sum_i m_i u_i . a_i. In 1D it is (k + 4 mu/3) u''; in 2D, plane strain.
+// Walls in reach clamp the solid: their displacement is zero (fixed) or follows their prescribed motion.
+// Pair moduli are harmonic means (Deptulski eq. 2.45, digest O-D4), so that damage can later lower
+// them per particle.
+#include "fluid/material.hpp"
+#include "kernels/kernel.hpp"
+#include "neighbours/neighbour_list.hpp"
+#include "state/particles.hpp"
+
+namespace psph {
+
+PSPH_HD inline Real harmonic_mean(Real a, Real b) { return a + b > Real(0) ? Real(2) * a * b / (a + b) : Real(0); }
+
+// u = x - x0, minimum image on periodic axes; stored for output and the elastic energy.
+template <int D>
+struct DisplacementPass {
+  ParticleView<D> s;
+  CellGrid<D> grid;
+  PSPH_HD void operator()(int i) const { s.u[i] = grid.separation(s.x[i], s.x0[i]); }
+};
+
+// Clamps: a wall presents the solid's displacement mirrored through it, u_w = 2 u_wall - sum_s u_s W_ws
+// / sum_s W_ws over its elastic neighbours s (the no-slip mirror of Adami, Hu & Adams 2012, eq. 23,
+// boundary/wall_velocity.hpp, applied to u), which puts the clamped plane on the wall surface. With
+// u_w = u_wall (zero for a fixed clamp) the clamp acted 1.6 spacings inside the wall: a clamped rod
+// vibrated 3 % low (VALIDATION.md).
+template <int D>
+struct ClampDisplacementPass {
+  NeighbourList<D> nb;
+  Kernel<D> kern;
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  PSPH_HD void operator()(int i) const {
+    if (mats.is_dynamic(s.material[i])) return;
+    Vec<D> sum = Vec<D>::zero();
+    Real wsum = 0;
+    nb.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
+      if (!mats.is_elastic(s.material[j])) return;
+      const Real w = kern.W(r);
+      sum += s.u[j] * w;
+      wsum += w;
+    });
+    if (wsum > Real(0)) s.u[i] = s.u[i] * Real(2) - sum * (Real(1) / wsum);
+  }
+};
+
+// One pair's bracket of the sum above: times V_j F_ij it is pair j's part of rho a_i.
+template <int D>
+PSPH_HD inline Vec<D> navier_pair(const Vec<D>& du, const Vec<D>& e, Real k, Real mu) {
+  const Real c = Real(D + 2), lambda_mu = k + mu / Real(3);  // lambda + mu
+  return du * (mu * (c - Real(D)) - lambda_mu) + e * (lambda_mu * c * dot(e, du));
+}
+
+template <int D>
+struct ElasticForcePass {
+  NeighbourList<D> nb;
+  Kernel<D> kern;
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  PSPH_HD void operator()(int i) const {
+    const int mi = s.material[i];
+    if (!mats.is_elastic(mi)) return;
+    const Real k_i = mats[mi].bulk_modulus, mu_i = mats[mi].shear_modulus;
+    const Vec<D> u_i = s.u[i];
+    Vec<D> f = Vec<D>::zero();
+    nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
+      const int mj = s.material[j];
+      if (r <= Real(0) || mats.is_fluid(mj)) return;
+      Real k = k_i, mu = mu_i;
+      if (mats.is_elastic(mj) && mj != mi)
+        k = harmonic_mean(k_i, mats[mj].bulk_modulus), mu = harmonic_mean(mu_i, mats[mj].shear_modulus);
+      f += navier_pair<D>(u_i - s.u[j], rij * (Real(1) / r), k, mu) * (s.m[j] / s.rho[j] * kern.F(r));
+    });
+    s.a[i] = f * (Real(1) / s.rho[i]) + mats.body_force_at(mi, s.x[i]);
+  }
+};
+
+// Elastic energy of a linear solid, -1/2 m u . a_elastic, with a_elastic = a - g (body force).
+template <int D>
+struct ElasticEnergyOf {
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  PSPH_HD Real operator()(int i) const {
+    const int mi = s.material[i];
+    if (!mats.is_elastic(mi)) return Real(0);
+    return Real(-0.5) * s.m[i] * dot(s.u[i], s.a[i] - mats.body_force_at(mi, s.x[i]));
+  }
+};
+
+}  // namespace psph
