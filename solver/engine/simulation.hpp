@@ -25,6 +25,7 @@
 #include "neighbours/neighbour_list.hpp"
 #include "scene/scene.hpp"
 #include "solid/elastic_force.hpp"
+#include "solid/strain.hpp"
 #include "state/derived_fields.hpp"
 #include "state/particles.hpp"
 
@@ -107,6 +108,9 @@ class Simulation final : public Engine {
 
   std::vector<double> field(const std::string& name) override {
     std::vector<double> out;
+    // The displacement form needs no strain or stress in its step: computed when asked for.
+    if (has_elastic_ && (name == "strain" || name == "stress"))
+      B::for_each(n_, StrainStressPass<D>{view_nb(), kern_, s_.view(), mats_});
     if (s_.fields().has(name)) {
       s_.fields().get(name).to_host_double(out);
       return out;

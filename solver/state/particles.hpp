@@ -36,6 +36,8 @@ struct ParticleView {
   // Elastic solids only (null otherwise): solid/elastic_force.hpp.
   Vec<D>* x0;  // reference (initial) position
   Vec<D>* u;   // displacement x - x0
+  Mat<D>* strain;  // small strain (solid/strain.hpp)
+  Mat<D>* stress;  // Cauchy stress
 };
 
 template <class T, class B>
@@ -68,7 +70,8 @@ class ParticleState {
     return ParticleView<D>{n_,         x.data(),    v.data(),    a.data(),  v_xsph.data(), v_noslip.data(), lap_v.data(),
                            rho.data(), drho.data(), p.data(),    m.data(),  rho0.data(),
                            number_density.data(),   material.data(), id.data(), near_fluid.data(),
-                           colour.data(), colour_gradient.data(), curvature.data(), x0.data(), u.data()};
+                           colour.data(), colour_gradient.data(), curvature.data(), x0.data(), u.data(),
+                           strain.data(), stress.data()};
   }
 
   // Allocates and registers the interface fields (a case with two fluids and surface tension).
@@ -86,10 +89,12 @@ class ParticleState {
   void enable_solid() {
     if (solid_) return;
     solid_ = true;
-    x0.resize(n_), u.resize(n_);
-    u.zero();
+    x0.resize(n_), u.resize(n_), strain.resize(n_), stress.resize(n_);
+    u.zero(), strain.zero(), stress.zero();
     reg(x0, FieldType::Real, D, "reference_position", "m", "initial position (small-strain reference configuration)");
     reg(u, FieldType::Real, D, "displacement", "m", "displacement x - x0 of elastic solids");
+    reg(strain, FieldType::Real, D * D, "strain", "-", "small strain sym(grad u), row-major");
+    reg(stress, FieldType::Real, D * D, "stress", "Pa", "Cauchy stress (tension positive), row-major");
   }
 
   // Reorders every registered field: field[i] <- field[perm[i]].
@@ -104,7 +109,8 @@ class ParticleState {
   DeviceArray<std::uint8_t, B> near_fluid;  // not registered: recomputed after every reordering
   DeviceArray<Real, B> colour, curvature;     // empty unless enable_interface()
   DeviceArray<Vec<D>, B> colour_gradient;
-  DeviceArray<Vec<D>, B> x0, u;               // empty unless enable_solid()
+  DeviceArray<Vec<D>, B> x0, u;          // empty unless enable_solid()
+  DeviceArray<Mat<D>, B> strain, stress;
 
  private:
   template <class T>
@@ -121,7 +127,8 @@ class ParticleState {
     h.to_host_double = [&arr, comps](std::vector<double>& out) {
       const std::vector<T> hv = arr.host();
       out.resize(hv.size() * static_cast<std::size_t>(comps));
-      const auto* raw = reinterpret_cast<const std::conditional_t<std::is_same_v<T, Vec<D>>, Real, T>*>(hv.data());
+      constexpr bool real_tuple = std::is_same_v<T, Vec<D>> || std::is_same_v<T, Mat<D>>;
+      const auto* raw = reinterpret_cast<const std::conditional_t<real_tuple, Real, T>*>(hv.data());
       for (std::size_t k = 0; k < out.size(); ++k) out[k] = static_cast<double>(raw[k]);
     };
     h.element_bytes = sizeof(T);
@@ -139,6 +146,7 @@ class ParticleState {
   template <class T>
   DeviceArray<T, B>& scratch() {
     if constexpr (std::is_same_v<T, Vec<D>>) return scratch_vec_;
+    else if constexpr (std::is_same_v<T, Mat<D>>) return scratch_mat_;
     else if constexpr (std::is_same_v<T, Real>) return scratch_real_;
     else if constexpr (std::is_same_v<T, std::uint8_t>) return scratch_u8_;
     else return scratch_i32_;
@@ -165,6 +173,7 @@ class ParticleState {
   bool interface_ = false, solid_ = false;
   FieldRegistry registry_;
   DeviceArray<Vec<D>, B> scratch_vec_;
+  DeviceArray<Mat<D>, B> scratch_mat_;
   DeviceArray<Real, B> scratch_real_;
   DeviceArray<std::uint8_t, B> scratch_u8_;
   DeviceArray<std::int32_t, B> scratch_i32_;
