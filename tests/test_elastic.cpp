@@ -92,6 +92,12 @@ TEST(Elastic, CaseKeys) {
   EXPECT_EQ(error_of(rod), "");
   expect_refused(rod, "poisson_ratio = 0.0", "poisson_ratio = 0.5", "bad.toml: materials.steel.poisson_ratio: expected a Poisson ratio in (-1, 0.5), got 0.5");
   expect_refused(rod, "young_modulus = 2.0e11\n", "", "materials.steel.young_modulus: missing");
+  // Above nu = 1/4 the central pair forces have a negative transverse stiffness: refused in 2D.
+  const std::string plate = replaced(replaced(replaced(rod, "dimension = 1", "dimension = 2"), "lower = [-6.665e-3]\nupper = [0.139965]\n\n",
+                                              "lower = [-6.665e-3, 0.0]\nupper = [0.139965, 6.665e-3]\n\n"),
+                                     "poisson_ratio = 0.0", "poisson_ratio = 0.3");
+  EXPECT_NE(error_of(plate).find("materials.steel.poisson_ratio: expected a Poisson ratio below 0.25 in 2D and 3D"),
+            std::string::npos) << error_of(plate);
   expect_refused(rod, "young_modulus = 2.0e11", "young_modulus = -1.0", "materials.steel.young_modulus");
   expect_refused(rod, "[materials.clamp]", "[materials.water]\nkind = \"fluid\"\ndensity = 1000.0\nviscosity = 1e-3\nsound_speed = 10.0\n\n[materials.clamp]",
           "materials: expected either fluids or elastic solids");

@@ -9,6 +9,9 @@
 //     = V_j F_ij [ (mu (c - d) - (k + mu/3)) du + (k + mu/3) c e (e . du) ],   du = u_i - u_j,
 // a central, antisymmetric pair force: momentum is conserved and the stiffness is symmetric, so
 // the elastic energy is -1/2 sum_i m_i u_i . a_i. In 1D it is (k + 4 mu/3) u''; in 2D, plane strain.
+// A pair's stiffness across e is mu (c - d) - (k + mu/3) = 5 mu/3 - k, negative above nu = 1/4 (the
+// Cauchy relation of central-force lattices): such solids go unstable, and the case reader refuses
+// them in 2D and 3D.
 // Walls in reach clamp the solid: their displacement is zero (fixed) or follows their prescribed motion.
 // Pair moduli are harmonic means (Deptulski eq. 2.45, digest O-D4), so that damage can later lower
 // them per particle.
