@@ -6,6 +6,8 @@
 // can stop after them.
 // Layout: neighbour k of particle i is at i * stride_i + k * stride_k: row-major on the CPU,
 // column-major on the GPU (coalesced loads across a warp).
+#include <cstdint>
+
 #include "fluid/material.hpp"
 #include "neighbours/cell_grid.hpp"
 

@@ -11,7 +11,8 @@
 // the elastic energy is -1/2 sum_i m_i u_i . a_i. In 1D it is (k + 4 mu/3) u''; in 2D, plane strain.
 // A pair's stiffness across e is mu (c - d) - (k + mu/3) = 5 mu/3 - k, negative above nu = 1/4 (the
 // Cauchy relation of central-force lattices): such solids go unstable, and the case reader refuses
-// them in 2D and 3D.
+// them in 2D and 3D. The same transverse term resists rigid rotations where the support is
+// truncated (free surfaces): a bending plate comes out far too stiff (VALIDATION.md).
 // Walls in reach clamp the solid: their displacement is zero (fixed) or follows their prescribed motion.
 // Pair moduli are harmonic means (Deptulski eq. 2.45, digest O-D4), so that damage can later lower
 // them per particle.
