@@ -13,7 +13,7 @@
 // Cauchy relation of central-force lattices): such solids go unstable, and the case reader refuses
 // them in 2D and 3D. The same transverse term resists rigid rotations where the support is
 // truncated (free surfaces): a bending plate comes out far too stiff (VALIDATION.md).
-// Walls in reach clamp the solid: their displacement is zero (fixed) or follows their prescribed motion.
+// Walls in reach clamp the solid through the displacement they present (ClampDisplacementPass).
 // Pair moduli are harmonic means (Deptulski eq. 2.45, digest O-D4), so that damage can later lower
 // them per particle.
 #include "fluid/material.hpp"
