@@ -108,9 +108,12 @@ class Simulation final : public Engine {
 
   std::vector<double> field(const std::string& name) override {
     std::vector<double> out;
-    // The displacement form needs no strain or stress in its step: computed when asked for.
-    if (has_elastic_ && (name == "strain" || name == "stress"))
+    // The displacement form needs no strain or stress in its step: computed when asked for, once
+    // per state.
+    if (has_elastic_ && (name == "strain" || name == "stress") && strain_step_ != steps_) {
       B::for_each(n_, StrainStressPass<D>{view_nb(), kern_, s_.view(), mats_});
+      strain_step_ = steps_;
+    }
     if (s_.fields().has(name)) {
       s_.fields().get(name).to_host_double(out);
       return out;
@@ -161,6 +164,7 @@ class Simulation final : public Engine {
       for (const auto& g : c.fields)
         if (g.name == f.info.name) f.from_host_bytes(g.bytes);
     t_ = c.time, dt_ = c.last_dt, dt_first_ = c.first_dt, steps_ = c.steps;
+    strain_step_ = -1;
     ramp_body_forces(t_);
     build_neighbours();
   }
@@ -278,7 +282,7 @@ class Simulation final : public Engine {
     s_.permute(perm_.data());
     if (every_particle) {
       s_.near_fluid.upload(std::vector<std::uint8_t>(n_, 1));
-    } else if (has_walls_) {
+    } else if (has_walls_ && has_fluid_) {  // without fluids every wall lists all its neighbours
       B::for_each(grid_.total, CellNearFluid<D>{view_cells(), cell_near_.data()});
       B::for_each(n_, NearFluid<D>{grid_, s_.x.data(), cell_near_.data(), s_.near_fluid.data()});
     }
@@ -479,6 +483,7 @@ class Simulation final : public Engine {
   int n_ = 0;
   double t_ = 0, dt_ = 0, dt_first_ = 0, c_max_ = 0, nu_max_ = 0, rho_over_sigma_ = 0;
   long steps_ = 0;
+  long strain_step_ = -1;  // the step whose strain and stress the fields hold
   bool has_walls_ = false, has_fluid_ = false, has_elastic_ = false;
   std::string dt_limit_ = "none";
 };

@@ -135,8 +135,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     // §7 item 17). The densest: a wall's volume m/rho follows its pressure through rho0 + p/c^2, so
     // a wall under water with a gas's rest density would shrink by the water's head over 1 kg/m^3.
     // Without fluids, walls only clamp an elastic solid and take its density.
-    const bool has_fluid = std::any_of(sc.materials.begin(), sc.materials.end(),
-                                       [](const SceneMaterial& m) { return m.props.kind == MaterialKind::Fluid; });
+    const bool has_fluid = has_liquid || has_gas;
     if (has_fluid && has_elastic)
       top.fail("materials", "expected either fluids or elastic solids: the fluid-solid coupling is not available yet");
     const MaterialKind bulk = has_elastic ? MaterialKind::Elastic : MaterialKind::Fluid;

@@ -90,7 +90,7 @@ void build_particles(Case& c) {
                     " lattice sites; expected at most 4e8");
   const double n_sum = lattice_kernel_sum(D, sc.options.kernel, sc.options.support_radius, dx);
   sc.x.clear(), sc.v.clear(), sc.mass.clear(), sc.material.clear();
-  long fluid = 0;  // fluid and elastic particles: what the forces move
+  long moving = 0;  // fluid and elastic particles: what the forces move
   int idx[3] = {0, 0, 0};
   std::mt19937_64 rng(12345);  // fixed seed: the same disorder on every run
   std::uniform_real_distribution<double> jitter(-sc.options.jitter * dx, sc.options.jitter * dx);
@@ -110,12 +110,12 @@ void build_particles(Case& c) {
       }
       sc.mass.push_back(m.props.rest_density / n_sum);
       sc.material.push_back(owner->material);
-      if (m.props.kind != MaterialKind::Wall) ++fluid;
+      if (m.props.kind != MaterialKind::Wall) ++moving;
     }
     int d = 0;
     while (d < D && ++idx[d] >= n[d]) idx[d++] = 0;
   }
-  if (fluid == 0)
+  if (moving == 0)
     throw CaseError(c.file + ": geometry: the geometry yields no fluid or elastic particles (" +
                     std::to_string(sc.material.size()) + " particles in all); check the shapes and the domain");
 }
