@@ -24,8 +24,9 @@
 #include "neighbours/fluid_proximity.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "scene/scene.hpp"
+#include "solid/clamp_partners.hpp"
 #include "solid/elastic_force.hpp"
-#include "solid/strain.hpp"
+#include "solid/stress_form.hpp"
 #include "state/derived_fields.hpp"
 #include "state/particles.hpp"
 
@@ -77,6 +78,7 @@ class Simulation final : public Engine {
     if (has_elastic_) {
       s_.enable_solid();
       B::copy(s_.x0.data(), s_.x.data(), sizeof(Vec<D>) * n_);
+      s_.mirror.upload(clamp_mirror_partners(sc));
     }
     bucket_start_.resize(2 * grid_.total), bucket_end_.resize(2 * grid_.total), cell_near_.resize(grid_.total);
     if (!has_fluid_) {
@@ -110,8 +112,9 @@ class Simulation final : public Engine {
     std::vector<double> out;
     // The displacement form needs no strain or stress in its step: computed when asked for, once
     // per state.
-    if (has_elastic_ && (name == "strain" || name == "stress") && strain_step_ != steps_) {
-      B::for_each(n_, StrainStressPass<D>{view_nb(), kern_, s_.view(), mats_});
+    if (has_elastic_ && opt_.solid_formulation == SolidFormulation::Displacement &&
+        (name == "strain" || name == "stress") && strain_step_ != steps_) {
+      B::for_each(n_, StrainStressPass<D>{view_nb_reference(), kern_, s_.view(), mats_});
       strain_step_ = steps_;
     }
     if (s_.fields().has(name)) {
@@ -176,7 +179,9 @@ class Simulation final : public Engine {
     st.a_max = B::template max_of<Real>(n_, AccelerationOf<D>{v});
     st.kinetic_energy = B::template sum_of<Real>(n_, KineticEnergyOf<D>{v, mats_});
     st.density_deviation_max = B::template max_of<Real>(n_, DensityDeviationOf<D>{v, mats_});
-    if (has_elastic_) st.elastic_energy = B::template sum_of<Real>(n_, ElasticEnergyOf<D>{v, mats_});
+    if (has_elastic_)
+      st.elastic_energy = stress_form() ? B::template sum_of<Real>(n_, StrainEnergyOf<D>{v, mats_})
+                                        : B::template sum_of<Real>(n_, ElasticEnergyOf<D>{v, mats_});
     st.dt_limit = dt_limit_;
     st.linear_iterations = linear_iterations_;
     return st;
@@ -257,6 +262,15 @@ class Simulation final : public Engine {
     return NeighbourList<D>{grid_, s_.x.data(), nb_index_.data(), nb_count_.data(), nb_fluid_count_.data(),
                             list_stride_i(), list_stride_k(), kern_.support * kern_.support};
   }
+  // The same lists with the reference positions: small-strain elasticity lives in the reference
+  // configuration (pairs closer than the support there; the skin keeps them listed while the
+  // relative displacement of neighbours stays below skin x support, i.e. strains and rotations
+  // below ~10 %).
+  NeighbourList<D> view_nb_reference() const {
+    NeighbourList<D> nb = view_nb();
+    nb.x = s_.x0.data();
+    return nb;
+  }
   int list_stride_i() const { return B::list_rows_contiguous ? capacity_ : 1; }
   int list_stride_k() const { return B::list_rows_contiguous ? 1 : n_; }
 
@@ -280,6 +294,7 @@ class Simulation final : public Engine {
     B::for_each(n_, CellKeyPass<D>{grid_, s_.x.data(), s_.material.data(), mats_, keys_.data()});
     B::sort_by_cell(keys_.data(), n_, 2 * grid_.total, perm_.data(), bucket_start_.data(), bucket_end_.data());
     s_.permute(perm_.data());
+    if (has_elastic_) B::for_each(n_, IndexOfIdPass<D>{s_.view()});
     if (every_particle) {
       s_.near_fluid.upload(std::vector<std::uint8_t>(n_, 1));
     } else if (has_walls_ && has_fluid_) {  // without fluids every wall lists all its neighbours
@@ -345,11 +360,22 @@ class Simulation final : public Engine {
     B::for_each(n_, FluidForcePass<D>{view_nb(), kern_, s_.view(), mats_, fo});
   }
 
-  // Elastic solids (solid/elastic_force.hpp): displacements, then the elastic acceleration.
+  // Elastic solids (solid/): displacements (mirrored on clamps), then the elastic acceleration.
+  bool stress_form() const { return opt_.solid_formulation == SolidFormulation::Stress; }
   void solid_pass() {
     B::for_each(n_, DisplacementPass<D>{s_.view(), grid_});
-    if (has_walls_) B::for_each(n_, ClampDisplacementPass<D>{view_nb(), kern_, s_.view(), mats_});
-    B::for_each(n_, ElasticForcePass<D>{view_nb(), kern_, s_.view(), mats_});
+    if (has_walls_) B::for_each(n_, ClampDisplacementPass<D>{s_.view(), mats_});
+    if (!stress_form()) {
+      B::for_each(n_, ElasticForcePass<D>{view_nb_reference(), kern_, s_.view(), mats_});
+      return;
+    }
+    B::for_each(n_, StrainStressPass<D>{view_nb_reference(), kern_, s_.view(), mats_});
+    B::for_each(n_, StressForcePass<D>{view_nb_reference(), kern_, s_.view(), mats_});
+    if (has_walls_) {
+      B::for_each(n_, ClampReactionPass<D>{view_nb_reference(), kern_, s_.view(), mats_});
+      B::for_each(n_, MirrorReactionPass<D>{s_.view(), mats_});
+      B::for_each(n_, ZeroWallAcceleration<D>{s_.view(), mats_});
+    }
   }
 
   // v <- (I - dt L)^-1 v on the fluid (fluid/viscosity.hpp), L at the current positions with the

@@ -78,6 +78,12 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
   std::map<std::string, int> mat_index;
   std::vector<std::string> walls_without_angle;
   bool has_liquid = false, has_gas = false, has_elastic = false;
+  // Elastic solids: the stress form by default (solid/stress_form.hpp: any Poisson ratio, free
+  // rotations at free surfaces, a per-particle stress law), or the displacement form
+  // (solid/elastic_force.hpp, Pazdniakou eq. 17).
+  CaseReader solid(top.table("solid", false), file, "solid");
+  o.solid_formulation = solid.choice("formulation", {"stress", "displacement"}, "stress") == "stress"
+                            ? SolidFormulation::Stress : SolidFormulation::Displacement;
   {
     const toml::table& mt = top.table("materials", true);
     if (mt.empty()) top.fail("materials", "expected at least one material");
@@ -99,9 +105,10 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
         // The displacement form sums central pair forces, whose transverse stiffness 5 mu/3 - k is
         // negative above nu = 1/4 (the Cauchy relation): a 2D plate at nu = 0.3 blew up within
         // 1,000 steps, at 0.25 within 16,000 (solid/elastic_force.hpp). A 1D rod has no transverse term.
-        if (D > 1 && !(nu < 0.25))
-          r.fail("poisson_ratio", "expected a Poisson ratio below 0.25 in 2D and 3D with the displacement form of "
-                                  "elasticity (central pair forces go unstable above it), got " + CaseReader::fmt(nu));
+        if (D > 1 && o.solid_formulation == SolidFormulation::Displacement && !(nu < 0.25))
+          r.fail("poisson_ratio", "expected a Poisson ratio below 0.25 in 2D and 3D with [solid] formulation = "
+                                  "\"displacement\" (central pair forces go unstable above it; the stress form takes "
+                                  "any ratio), got " + CaseReader::fmt(nu));
         m.props.bulk_modulus = Real(E / (3 * (1 - 2 * nu)));
         m.props.shear_modulus = Real(E / (2 * (1 + nu)));
         m.props.sound_speed =
@@ -135,6 +142,9 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     // §7 item 17). The densest: a wall's volume m/rho follows its pressure through rho0 + p/c^2, so
     // a wall under water with a gas's rest density would shrink by the water's head over 1 kg/m^3.
     // Without fluids, walls only clamp an elastic solid and take its density.
+    if (!has_elastic && solid.has("formulation"))
+      solid.fail("formulation", "expected a material with kind = \"elastic\" for it to apply to");
+    solid.finish();
     const bool has_fluid = has_liquid || has_gas;
     if (has_fluid && has_elastic)
       top.fail("materials", "expected either fluids or elastic solids: the fluid-solid coupling is not available yet");

@@ -16,6 +16,8 @@ namespace psph {
 
 enum class DensityMethod { Summation, NormalisedSummation, NumberSummation, Continuity };
 enum class Integrator { Leapfrog, VelocityVerlet };
+// Elastic solids: the stress form (solid/stress_form.hpp) or the displacement form (solid/elastic_force.hpp).
+enum class SolidFormulation { Stress, Displacement };
 
 struct SceneMaterial {
   std::string name;
@@ -66,6 +68,8 @@ struct SolverOptions {
   double normal_threshold = 0.01;  // a normal is reliable when |grad c| > this / smoothing length
   bool geometric_wetting = true;   // walls' colour extrapolated (interface/wall_wetting.hpp), else cos(theta)
   bool contact_line_force = true;  // the unbalanced Young force at contact lines (interface/contact_line.hpp)
+  // Elastic solids ([solid]).
+  SolidFormulation solid_formulation = SolidFormulation::Stress;
 };
 
 struct Scene {

@@ -36,4 +36,13 @@ PSPH_HD inline Mat<D> small_strain_stress(const Mat<D>& eps, Real k, Real mu, Re
   return s;
 }
 
+// Elastic energy density sigma : eps / 2.
+template <int D>
+PSPH_HD inline Real half_contraction(const Mat<D>& sigma, const Mat<D>& eps) {
+  Real w = 0;
+  for (int r = 0; r < D; ++r)
+    for (int c = 0; c < D; ++c) w += sigma.a[r][c] * eps.a[r][c];
+  return Real(0.5) * w;
+}
+
 }  // namespace psph

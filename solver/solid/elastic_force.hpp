@@ -13,7 +13,7 @@
 // Cauchy relation of central-force lattices): such solids go unstable, and the case reader refuses
 // them in 2D and 3D. The same transverse term resists rigid rotations where the support is
 // truncated (free surfaces): a bending plate comes out far too stiff (VALIDATION.md).
-// Walls in reach clamp the solid through the displacement they present (ClampDisplacementPass).
+// Walls in reach clamp the solid through the displacement they present (solid/clamp.hpp).
 // Pair moduli are harmonic means (Deptulski eq. 2.45, digest O-D4), so that damage can later lower
 // them per particle.
 #include "fluid/material.hpp"
@@ -31,31 +31,6 @@ struct DisplacementPass {
   ParticleView<D> s;
   CellGrid<D> grid;
   PSPH_HD void operator()(int i) const { s.u[i] = grid.separation(s.x[i], s.x0[i]); }
-};
-
-// Clamps: a wall presents the solid's displacement mirrored through it, u_w = 2 u_wall - sum_s u_s W_ws
-// / sum_s W_ws over its elastic neighbours s (the no-slip mirror of Adami, Hu & Adams 2012, eq. 23,
-// boundary/wall_velocity.hpp, applied to u), which puts the clamped plane on the wall surface. With
-// u_w = u_wall (zero for a fixed clamp) the clamp acted 1.6 spacings inside the wall: a clamped rod
-// vibrated 3 % low (VALIDATION.md).
-template <int D>
-struct ClampDisplacementPass {
-  NeighbourList<D> nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  MaterialTable<D> mats;
-  PSPH_HD void operator()(int i) const {
-    if (mats.is_dynamic(s.material[i])) return;
-    Vec<D> sum = Vec<D>::zero();
-    Real wsum = 0;
-    nb.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
-      if (!mats.is_elastic(s.material[j])) return;
-      const Real w = kern.W(r);
-      sum += s.u[j] * w;
-      wsum += w;
-    });
-    if (wsum > Real(0)) s.u[i] = s.u[i] * Real(2) - sum * (Real(1) / wsum);
-  }
 };
 
 // One pair's bracket of the sum above: times V_j F_ij it is pair j's part of rho a_i.

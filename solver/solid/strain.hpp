@@ -1,32 +1,33 @@
 #pragma once
-// Strain and stress of an elastic solid, for output and for the damage criteria to come:
+// Strain and stress of an elastic solid (the stress form's first pass, and output):
 //   eps_i = sym sum_j V_j (u_j - u_i) (x) K_i grad W~_ij   (Deptulski eq. 2.82 with the fixes of
 //   digest O-S2: displacements, symmetrised; the mixed correction eq. 2.63b, kernels/corrections.hpp)
 //   sigma_i = k tr(eps) I + 2 mu dev(eps)                  (eq. 2.84, constitutive.hpp)
-// over the solid's own particles: the corrected gradient is exact for a linear displacement at
-// any truncated support, so the free surfaces and the clamps need no ghost values (the mirrored
-// displacement a clamp presents to the elastic force is no linear extension: with the walls in
-// these sums the strain next to a clamp of a vibrating rod read 24 % low; without, 1 %).
+// over the solid's particles and the walls in reach, which present the mirrored displacement
+// (solid/clamp.hpp): linear across a clamp, so the corrected gradient stays exact there, as it is
+// at any truncated support (free surfaces need nothing).
 #include "kernels/corrections.hpp"
 #include "solid/constitutive.hpp"
 #include "solid/elastic_force.hpp"
 
 namespace psph {
 
-// The elastic neighbours of particle i.
+// The solid's neighbours of particle i: elastic and wall particles, not fluids.
 template <int D>
-struct ElasticNeighbours {
+struct SolidNeighbours {
   NeighbourList<D> nb;
   ParticleView<D> s;
   MaterialTable<D> mats;
   template <class F>
   PSPH_HD void for_each(int i, F&& f) const {
     nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
-      if (mats.is_elastic(s.material[j])) f(j, rij, r);
+      if (!mats.is_fluid(s.material[j])) f(j, rij, r);
     });
   }
 };
 
+// Per elastic particle: the strain, the stress, and the gradient correction S_i, G_i, K_i kept for
+// the force pass.
 template <int D>
 struct StrainStressPass {
   NeighbourList<D> nb;
@@ -36,7 +37,7 @@ struct StrainStressPass {
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
     if (!mats.is_elastic(mi)) return;
-    const ElasticNeighbours<D> solid{nb, s, mats};
+    const SolidNeighbours<D> solid{nb, s, mats};
     auto volume = [&](int j) { return s.m[j] / s.rho[j]; };
     const GradientCorrection<D> corr = gradient_correction(solid, kern, i, volume);
     Mat<D> grad_u = Mat<D>::zero();
@@ -46,7 +47,16 @@ struct StrainStressPass {
     const Mat<D> eps = symmetric_part(grad_u);
     s.strain[i] = eps;
     s.stress[i] = small_strain_stress(eps, mats[mi].bulk_modulus, mats[mi].shear_modulus);
+    s.shepard[i] = corr.shepard, s.shepard_grad[i] = corr.grad_sum, s.kcorr[i] = corr.K;
   }
 };
+
+// g_ij = K_i grad W~_ij from particle i's stored correction (eq. 2.63b with 2.61a).
+template <int D>
+PSPH_HD inline Vec<D> corrected_gradient(const ParticleView<D>& s, int i, Real W, const Vec<D>& gradW) {
+  GradientCorrection<D> c;
+  c.shepard = s.shepard[i], c.grad_sum = s.shepard_grad[i], c.K = s.kcorr[i];
+  return c.gradient(W, gradW);
+}
 
 }  // namespace psph

@@ -38,6 +38,11 @@ struct ParticleView {
   Vec<D>* u;   // displacement x - x0
   Mat<D>* strain;  // small strain (solid/strain.hpp)
   Mat<D>* stress;  // Cauchy stress
+  Real* shepard;   // the gradient correction S_i, G_i, K_i of the strain pass (solid/strain.hpp)
+  Vec<D>* shepard_grad;
+  Mat<D>* kcorr;
+  std::int32_t* mirror;       // clamps: id of the mirror partner, -1 if none (solid/clamp_partners.hpp)
+  std::int32_t* index_of_id;  // current index of each id (solid/clamp.hpp)
 };
 
 template <class T, class B>
@@ -71,7 +76,8 @@ class ParticleState {
                            rho.data(), drho.data(), p.data(),    m.data(),  rho0.data(),
                            number_density.data(),   material.data(), id.data(), near_fluid.data(),
                            colour.data(), colour_gradient.data(), curvature.data(), x0.data(), u.data(),
-                           strain.data(), stress.data()};
+                           strain.data(), stress.data(), shepard.data(), shepard_grad.data(), kcorr.data(),
+                           mirror.data(), index_of_id.data()};
   }
 
   // Allocates and registers the interface fields (a case with two fluids and surface tension).
@@ -90,11 +96,13 @@ class ParticleState {
     if (solid_) return;
     solid_ = true;
     x0.resize(n_), u.resize(n_), strain.resize(n_), stress.resize(n_);
+    shepard.resize(n_), shepard_grad.resize(n_), kcorr.resize(n_), mirror.resize(n_), index_of_id.resize(n_);
     u.zero(), strain.zero(), stress.zero();
     reg(x0, FieldType::Real, D, "reference_position", "m", "initial position (small-strain reference configuration)");
     reg(u, FieldType::Real, D, "displacement", "m", "displacement x - x0 of elastic solids");
     reg(strain, FieldType::Real, D * D, "strain", "-", "small strain sym(grad u), row-major");
     reg(stress, FieldType::Real, D * D, "stress", "Pa", "Cauchy stress (tension positive), row-major");
+    reg(mirror, FieldType::Int, 1, "clamp_mirror", "-", "id of a clamp wall's mirror partner and back, -1 if none");
   }
 
   // Reorders every registered field: field[i] <- field[perm[i]].
@@ -111,6 +119,11 @@ class ParticleState {
   DeviceArray<Vec<D>, B> colour_gradient;
   DeviceArray<Vec<D>, B> x0, u;          // empty unless enable_solid()
   DeviceArray<Mat<D>, B> strain, stress;
+  DeviceArray<Real, B> shepard;  // the strain pass's correction, recomputed every step: not registered
+  DeviceArray<Vec<D>, B> shepard_grad;
+  DeviceArray<Mat<D>, B> kcorr;
+  DeviceArray<std::int32_t, B> mirror;
+  DeviceArray<std::int32_t, B> index_of_id;  // not registered: recomputed after every reordering
 
  private:
   template <class T>

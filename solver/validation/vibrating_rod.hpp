@@ -10,8 +10,10 @@
 
 namespace psph {
 
-// The rod with mode `k` set up; `clamped_free` removes the clamp at x = L.
-Case vibrating_rod_case(int k, bool clamped_free);
+// The rod with mode `k` set up; `clamped_free` removes the clamp at x = L; the support radius is
+// lambda = support_over_length L (the case's 0.05 by default), the clamps one support deep.
+Case vibrating_rod_case(int k, bool clamped_free, SolidFormulation form = SolidFormulation::Stress,
+                        double support_over_length = 0.05);
 
 struct RodVibration {
   double beta2 = 0;          // (w L / c)^2 measured

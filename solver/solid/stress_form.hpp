@@ -1,0 +1,50 @@
+#pragma once
+// Small-strain elasticity in stress form with the mixed kernel and gradient correction (Deptulski
+// 2021 §2.4.2, digest §2.8.2):
+//   a_i = 1/rho_i sum_j V_j (sigma_i g_ij - sigma_j g_ji),   g_ij = K_i grad W~_ij   (eq. 2.86)
+// with the strain and stress of solid/strain.hpp. g_ij != -g_ji once corrected, hence two terms;
+// the forces are -dE/du of the elastic energy E = sum_i V_i sigma_i : eps_i / 2 (the solid's
+// particles only: walls carry no stress, and clamps add the chain rule of their mirror,
+// solid/clamp.hpp), so kinetic + E is conserved. Unlike the displacement form's central pair
+// forces (elastic_force.hpp), it holds for any Poisson ratio, leaves rigid rotations free at free
+// surfaces, and takes a per-particle stress law (damage).
+#include "solid/clamp.hpp"
+#include "solid/strain.hpp"
+
+namespace psph {
+
+template <int D>
+struct StressForcePass {
+  NeighbourList<D> nb;
+  Kernel<D> kern;
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  PSPH_HD void operator()(int i) const {
+    const int mi = s.material[i];
+    if (!mats.is_elastic(mi)) return;
+    const Mat<D> sigma_i = s.stress[i];
+    Vec<D> f = Vec<D>::zero();
+    SolidNeighbours<D>{nb, s, mats}.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
+      if (r <= Real(0)) return;
+      const Real W = kern.W(r);
+      const Vec<D> gradW = kern.grad(rij, r);  // grad_i W_ij; grad_j W_ji = -grad_i W_ij
+      Vec<D> t = sigma_i * corrected_gradient(s, i, W, gradW);
+      if (mats.is_elastic(s.material[j])) t -= s.stress[j] * corrected_gradient(s, j, W, gradW * Real(-1));
+      f += t * (s.m[j] / s.rho[j]);
+    });
+    s.a[i] = f * (Real(1) / s.rho[i]) + mats.body_force_at(mi, s.x[i]);
+  }
+};
+
+// Elastic energy V_i sigma_i : eps_i / 2 of the stress form.
+template <int D>
+struct StrainEnergyOf {
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  PSPH_HD Real operator()(int i) const {
+    if (!mats.is_elastic(s.material[i])) return Real(0);
+    return s.m[i] / s.rho[i] * half_contraction(s.stress[i], s.strain[i]);
+  }
+};
+
+}  // namespace psph
