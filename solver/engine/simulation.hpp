@@ -294,7 +294,7 @@ class Simulation final : public Engine {
     B::for_each(n_, CellKeyPass<D>{grid_, s_.x.data(), s_.material.data(), mats_, keys_.data()});
     B::sort_by_cell(keys_.data(), n_, 2 * grid_.total, perm_.data(), bucket_start_.data(), bucket_end_.data());
     s_.permute(perm_.data());
-    if (has_elastic_) B::for_each(n_, IndexOfIdPass<D>{s_.view()});
+    if (has_elastic_ && has_walls_) B::for_each(n_, IndexOfIdPass<D>{s_.view()});  // for the clamps' mirror
     if (every_particle) {
       s_.near_fluid.upload(std::vector<std::uint8_t>(n_, 1));
     } else if (has_walls_ && has_fluid_) {  // without fluids every wall lists all its neighbours
@@ -371,11 +371,6 @@ class Simulation final : public Engine {
     }
     B::for_each(n_, StrainStressPass<D>{view_nb_reference(), kern_, s_.view(), mats_});
     B::for_each(n_, StressForcePass<D>{view_nb_reference(), kern_, s_.view(), mats_});
-    if (has_walls_) {
-      B::for_each(n_, ClampReactionPass<D>{view_nb_reference(), kern_, s_.view(), mats_});
-      B::for_each(n_, MirrorReactionPass<D>{s_.view(), mats_});
-      B::for_each(n_, ZeroWallAcceleration<D>{s_.view(), mats_});
-    }
   }
 
   // v <- (I - dt L)^-1 v on the fluid (fluid/viscosity.hpp), L at the current positions with the

@@ -32,7 +32,9 @@ struct StressForcePass {
       if (mats.is_elastic(s.material[j])) t -= s.stress[j] * corrected_gradient(s, j, W, gradW * Real(-1));
       f += t * (s.m[j] / s.rho[j]);
     });
-    s.a[i] = f * (Real(1) / s.rho[i]) + mats.body_force_at(mi, s.x[i]);
+    Vec<D> a = f * (Real(1) / s.rho[i]);
+    if (s.mirror[i] >= 0) a += clamp_reaction(nb, kern, s, mats, s.index_of_id[s.mirror[i]]) * (Real(1) / s.m[i]);
+    s.a[i] = a + mats.body_force_at(mi, s.x[i]);
   }
 };
 
