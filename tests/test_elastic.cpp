@@ -103,8 +103,21 @@ TEST(Elastic, CaseKeys) {
                  "solid.formulation");
   EXPECT_EQ(error_of(rod + "\n[solid]\nformulation = \"displacement\"\n"), "");
   expect_refused(rod, "young_modulus = 2.0e11", "young_modulus = -1.0", "materials.steel.young_modulus");
-  expect_refused(rod, "[materials.clamp]", "[materials.water]\nkind = \"fluid\"\ndensity = 1000.0\nviscosity = 1e-3\nsound_speed = 10.0\n\n[materials.clamp]",
-          "materials: expected either fluids or elastic solids");
+  // Damping and the coupling pressure.
+  expect_refused(rod + "\n[solid]\ndamping_rate = 10.0\n", "damping_rate = 10.0", "damping_rate = -1.0", "solid.damping_rate");
+  expect_refused(rod + "\n[solid]\ncoupling = \"pair\"\n", "", "",
+                 "solid.coupling: expected a case with both fluids and elastic solids");
+  const std::string cube = embedded_case_text("elastic_cube_3d");
+  EXPECT_EQ(error_of(cube), "");
+  expect_refused(cube, "[solid]", "[solid]\ncoupling = \"summation\"", "solid.coupling");
+  expect_refused(cube, "[solid]", "[solid]\nformulation = \"displacement\"\ncoupling = \"traction\"",
+                 "solid.coupling: expected \"pair\" or \"pair_eos\" with formulation = \"displacement\"");
+  EXPECT_EQ(error_of(replaced(cube, "[solid]", "[solid]\nformulation = \"displacement\"")), "");
+  expect_refused(cube, "[solver]", "[solver]\nimplicit_viscosity = true", "solver.implicit_viscosity: expected false");
+  expect_refused(cube, "[solver]", "[solver]\nlaplacian_correction = \"tensor\"", "solver.laplacian_correction");
+  const std::string water = embedded_case_text("poiseuille_2d");
+  expect_refused(water, "[time]", "[solid]\ndamping_rate = 1.0\n\n[time]",
+                 "solid.damping_rate: expected a material with kind = \"elastic\"");
   expect_refused(rod, "lower = [0.0]\nupper = [0.1333]\nmaterial = \"steel\"", "lower = [0.0]\nupper = [0.1333]\nmaterial = \"clamp\"",
           "no fluid or elastic particles");
 }

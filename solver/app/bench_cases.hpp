@@ -3,6 +3,7 @@
 // full neighbourhood and moves), in 2D and 3D, over a range of sizes.
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace psph {
@@ -10,6 +11,8 @@ namespace psph {
 struct BenchSpec {
   std::string name;
   std::string embedded_case;  // non-empty: time this case file instead of the fluid box
+  std::vector<std::pair<std::string, std::string>> text_keys;  // case values replaced ("solid.formulation")
+  std::vector<std::pair<std::string, double>> number_keys;
   int dimension = 3;
   long target_particles = 10000;
   double support_per_spacing = 2.0;  // Pazdniakou's resolution: support = 2 spacings
@@ -18,7 +21,7 @@ struct BenchSpec {
 
 struct BenchResult {
   std::string name, backend, device, precision;
-  int dimension = 0, particles = 0, fluid_particles = 0, threads = 1;
+  int dimension = 0, particles = 0, fluid_particles = 0, moving_particles = 0, threads = 1;  // moving: fluid and elastic
   long steps = 0;
   double seconds = 0, particle_steps_per_second = 0, fluid_particle_steps_per_second = 0, neighbours = 0,
          interactions_per_second = 0;

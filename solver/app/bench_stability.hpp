@@ -16,6 +16,8 @@ struct StabilityRecord {
   long steps = 0;
 };
 
-std::vector<StabilityRecord> stability_sweep(const std::string& backend, bool quick, std::ostream* log);
+// `only`: the cases to sweep (their names, e.g. oscillating_plate_2d); empty: every case.
+std::vector<StabilityRecord> stability_sweep(const std::string& backend, bool quick, std::ostream* log,
+                                             const std::vector<std::string>& only = {});
 
 }  // namespace psph

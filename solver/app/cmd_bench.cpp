@@ -30,8 +30,8 @@ int accuracy(bool json, const std::string& backend, bool quick) {
   return 0;
 }
 
-int stability(bool json, const std::string& backend, bool quick) {
-  const auto recs = stability_sweep(backend, quick, json ? &std::cerr : &std::cout);
+int stability(bool json, const std::string& backend, bool quick, const std::vector<std::string>& names) {
+  const auto recs = stability_sweep(backend, quick, json ? &std::cerr : &std::cout, names);
   nlohmann::json out = nlohmann::json::array();
   for (const auto& r : recs)
     out.push_back({{"case", r.case_name},
@@ -65,7 +65,7 @@ int stability(bool json, const std::string& backend, bool quick) {
 int cmd_bench(const std::vector<std::string>& names, bool json, const std::string& backend, bool quick,
               bool accuracy_sweep, bool stability_sweep_) {
   if (accuracy_sweep) return accuracy(json, backend, quick);
-  if (stability_sweep_) return stability(json, backend, quick);
+  if (stability_sweep_) return stability(json, backend, quick, names);
   std::vector<BenchSpec> specs;
   for (const BenchSpec& spec : bench_specs(backend, quick))
     if (names.empty() || std::find(names.begin(), names.end(), spec.name) != names.end()) specs.push_back(spec);
@@ -103,9 +103,10 @@ int cmd_bench(const std::vector<std::string>& names, bool json, const std::strin
       char line[400];
       std::snprintf(line, sizeof line,
                     "%-24s %dD %8d particles (%8d fluid) %5ld steps %8.3f s  %10.4g fluid particle-steps/s  "
-                    "%10.4g interactions/s (%.1f neighbours)",
+                    "%10.4g particle-steps/s  %10.4g interactions/s (%.1f neighbours)",
                     r.name.c_str(), r.dimension, r.particles, r.fluid_particles, r.steps, r.seconds,
-                    r.fluid_particle_steps_per_second, r.interactions_per_second, r.neighbours);
+                    r.fluid_particle_steps_per_second, r.particle_steps_per_second, r.interactions_per_second,
+                    r.neighbours);
       std::cout << line << std::endl;
     }
   }

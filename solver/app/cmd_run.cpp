@@ -128,7 +128,9 @@ int drive(Case& c, const RunOptions& opt) {
   };
   const bool elastic = std::any_of(c.scene.materials.begin(), c.scene.materials.end(),
                                    [](const SceneMaterial& m) { return m.props.kind == MaterialKind::Elastic; });
+  const bool damped = elastic && c.scene.options.solid_damping_rate > 0;
   if (elastic) rd->add_monitor_columns({"elastic_energy"});
+  if (damped) rd->add_monitor_columns({"dissipated_energy"});
   std::unique_ptr<TwoPhaseMonitor> two_phase;
   if (c.two_phase) {
     two_phase = std::make_unique<TwoPhaseMonitor>(c.scene, c.monitor_region);
@@ -136,7 +138,11 @@ int drive(Case& c, const RunOptions& opt) {
   }
   auto monitor = [&] {
     std::vector<double> extra;
-    if (elastic) extra.push_back(engine->stats().elastic_energy);
+    if (elastic || damped) {
+      const StepStats st = engine->stats();
+      if (elastic) extra.push_back(st.elastic_energy);
+      if (damped) extra.push_back(st.dissipated_energy);
+    }
     if (!two_phase) return rd->monitor(*engine, extra);
     const bool before = two_phase->percolation_time() >= 0;
     const std::vector<double> row = two_phase->sample(*engine);

@@ -9,7 +9,8 @@
 //                 fluid neighbours f, r_wf = x_w - x_f (Adami, Hu & Adams 2012, J. Comput. Phys.
 //                 231:7057, eq. 27), and rho_w from the EOS inverted at p_w: the wall carries the
 //                 fluid's pressure plus the body-force head, so it holds any sustained load.
-//                 Walls here are fixed or move at constant velocity (a_w = 0).
+//                 Walls here are fixed or move at constant velocity (a_w = 0); elastic solids
+//                 present the same (solid/fluid_coupling.hpp).
 #include "fluid/eos.hpp"
 #include "fluid/material.hpp"
 #include "kernels/kernel.hpp"
@@ -20,6 +21,23 @@ namespace psph {
 
 enum class WallPressure { Summation = 0, Extrapolated = 1 };
 
+// Adami, Hu & Adams (2012) eq. 27 at particle i, which accelerates at a_i (0 for walls and solids
+// here, solid/fluid_coupling.hpp), into p; false (p untouched) without fluid within the support.
+template <int D>
+PSPH_HD inline bool extrapolate_fluid_pressure(const NeighbourList<D>& nb, const Kernel<D>& kern,
+                                               const ParticleView<D>& s, const MaterialTable<D>& mats, int i,
+                                               const Vec<D>& a_i, Real& p) {
+  Real psum = 0, wsum = 0;
+  nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
+    const Real w = kern.W(r);
+    psum += (s.p[j] + s.rho[j] * dot(mats.body_force_at(s.material[j], s.x[j]) - a_i, rij)) * w;
+    wsum += w;
+  });
+  if (!(wsum > Real(0))) return false;
+  p = psum / wsum;
+  return true;
+}
+
 template <int D>
 struct WallPressurePass {
   NeighbourList<D> nb;
@@ -28,15 +46,9 @@ struct WallPressurePass {
   MaterialTable<D> mats;
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
-    if (mats.is_fluid(mi)) return;
-    Real psum = 0, wsum = 0;
-    if (s.near_fluid[i])
-      nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
-        const Real w = kern.W(r);
-        psum += (s.p[j] + s.rho[j] * dot(mats.body_force_at(s.material[j], s.x[j]), rij)) * w;
-        wsum += w;
-      });
-    const Real p = wsum > Real(0) ? psum / wsum : mats[mi].background_pressure;
+    if (mats[mi].kind != MaterialKind::Wall) return;
+    Real p = mats[mi].background_pressure;
+    if (s.near_fluid[i]) extrapolate_fluid_pressure(nb, kern, s, mats, i, Vec<D>::zero(), p);
     s.p[i] = p;
     s.rho[i] = density_from_pressure(mats[mi], p, s.rho0[i]);
   }

@@ -13,6 +13,7 @@ namespace psph {
 struct StepStats {
   double v_max = 0, a_max = 0, kinetic_energy = 0, density_deviation_max = 0;
   double elastic_energy = 0;  // elastic solids (solid/elastic_force.hpp)
+  double dissipated_energy = 0;  // by the solids' damping since the start (solid/damping.hpp)
   std::string dt_limit;  // which limit set the last step
   int linear_iterations = 0;  // BiCGSTAB iterations of the last implicit viscous step (0 if explicit)
 };
@@ -38,7 +39,7 @@ class Engine {
   virtual std::vector<std::string> field_names() const = 0;
   virtual std::string backend() const = 0;
   virtual std::string device() const = 0;
-  // Mean number of neighbours (r < support) per fluid particle.
+  // Mean number of neighbours (r < support) per fluid or elastic particle.
   virtual double mean_neighbours() = 0;
   // The whole state, for a restart. Rebuilds the neighbour lists first (see state/checkpoint.hpp).
   virtual Checkpoint checkpoint() = 0;

@@ -25,7 +25,9 @@
 #include "neighbours/neighbour_list.hpp"
 #include "scene/scene.hpp"
 #include "solid/clamp_partners.hpp"
+#include "solid/damping.hpp"
 #include "solid/elastic_force.hpp"
+#include "solid/fluid_coupling.hpp"
 #include "solid/stress_form.hpp"
 #include "state/derived_fields.hpp"
 #include "state/particles.hpp"
@@ -79,11 +81,13 @@ class Simulation final : public Engine {
       s_.enable_solid();
       B::copy(s_.x0.data(), s_.x.data(), sizeof(Vec<D>) * n_);
       s_.mirror.upload(clamp_mirror_partners(sc));
+      if (has_fluid_) s_.enable_coupling();
     }
     bucket_start_.resize(2 * grid_.total), bucket_end_.resize(2 * grid_.total), cell_near_.resize(grid_.total);
     if (!has_fluid_) {
       build_neighbours();
-      solid_pass();
+      solid_strain();
+      forces();
       return;
     }
     if (mats_.open.active()) B::for_each(n_, ConvertInletFluid<D>{s_.view(), mats_});
@@ -97,7 +101,8 @@ class Simulation final : public Engine {
       build_neighbours();
     }
     open_boundary_state();
-    force_pass();
+    if (has_elastic_) solid_strain();
+    forces();
   }
 
   int dimension() const override { return D; }
@@ -140,6 +145,7 @@ class Simulation final : public Engine {
     Checkpoint c;
     c.dimension = D, c.particles = n_, c.precision = precision_name();
     c.time = t_, c.last_dt = dt_, c.first_dt = dt_first_, c.steps = steps_;
+    c.dissipated_energy = dissipated_;
     for (const auto& f : s_.fields().all()) {
       c.fields.push_back(CheckpointField{f.info.name, f.element_bytes, {}});
       f.to_host_bytes(c.fields.back().bytes);
@@ -167,6 +173,7 @@ class Simulation final : public Engine {
       for (const auto& g : c.fields)
         if (g.name == f.info.name) f.from_host_bytes(g.bytes);
     t_ = c.time, dt_ = c.last_dt, dt_first_ = c.first_dt, steps_ = c.steps;
+    dissipated_ = c.dissipated_energy;
     strain_step_ = -1;
     ramp_body_forces(t_);
     build_neighbours();
@@ -180,8 +187,10 @@ class Simulation final : public Engine {
     st.kinetic_energy = B::template sum_of<Real>(n_, KineticEnergyOf<D>{v, mats_});
     st.density_deviation_max = B::template max_of<Real>(n_, DensityDeviationOf<D>{v, mats_});
     if (has_elastic_)
-      st.elastic_energy = stress_form() ? B::template sum_of<Real>(n_, StrainEnergyOf<D>{v, mats_})
-                                        : B::template sum_of<Real>(n_, ElasticEnergyOf<D>{v, mats_});
+      st.elastic_energy =
+          stress_form() ? B::template sum_of<Real>(n_, StrainEnergyOf<D>{v, mats_})
+                        : B::template sum_of<Real>(n_, ElasticEnergyOf<D>{{view_nb_reference(), kern_, v, mats_}});
+    st.dissipated_energy = dissipated_;
     st.dt_limit = dt_limit_;
     st.linear_iterations = linear_iterations_;
     return st;
@@ -189,8 +198,8 @@ class Simulation final : public Engine {
 
   double mean_neighbours() override {
     const Real total = B::template sum_of<Real>(n_, NeighbourCount<D>{view_nb(), s_.material.data(), mats_});
-    const Real fluid = B::template sum_of<Real>(n_, IsFluid<D>{s_.material.data(), mats_});
-    return fluid > 0 ? double(total / fluid) : 0.0;
+    const Real moving = B::template sum_of<Real>(n_, IsDynamic<D>{s_.material.data(), mats_});
+    return moving > 0 ? double(total / moving) : 0.0;
   }
 
   void step(double t_stop) override {
@@ -221,6 +230,8 @@ class Simulation final : public Engine {
       B::for_each(n_, DriftPass<D>{v, grid_, Real(dt), continuity()});
       evaluate();
     }
+    if (opt_.solid_damping_rate > 0)  // the power at the end of the step, times dt
+      dissipated_ += dt * B::template sum_of<Real>(n_, DampingPowerOf<D>{s_.view(), mats_, Real(opt_.solid_damping_rate)});
     t_ += dt;
     ++steps_;
     dt_ = dt;
@@ -317,7 +328,8 @@ class Simulation final : public Engine {
     const bool normalised = opt_.density == DensityMethod::NormalisedSummation;
     const bool number = opt_.density == DensityMethod::NumberSummation;
     if (normalised) B::for_each(n_, NumberDensityPass<D>{view_nb(), kern_, s_.view(), all_particles});
-    B::for_each(n_, DensitySummationPass<D>{view_nb(), kern_, s_.view(), mats_, normalised, number, all_particles});
+    B::for_each(n_, DensitySummationPass<D>{view_nb(), kern_, s_.view(), mats_, normalised, number, all_particles,
+                                            has_elastic_});
   }
 
   // d rho/dt with the velocity that drifts the particles (fluid/continuity.hpp).
@@ -327,10 +339,20 @@ class Simulation final : public Engine {
                                       Real(smoothing_length()), opt_.wall_pressure == WallPressure::Summation});
   }
 
-  void force_pass() {
-    if (has_walls_ && opt_.wall_pressure == WallPressure::Extrapolated)
-      B::for_each(n_, WallPressurePass<D>{view_nb(), kern_, s_.view(), mats_});
-    if (has_walls_) B::for_each(n_, WallVelocityPass<D>{view_nb(), kern_, s_.view(), mats_, opt_.wall_noslip});
+  // Every force of a step (after the solids' strain): the fluid's forces (with the pressure and
+  // velocity that walls and solids present to it), the solids' own forces, then the fluid's
+  // reaction on them.
+  void forces() {
+    if (has_fluid_ && has_elastic_)
+      B::for_each(n_, SolidInterfacePressurePass<D>{view_nb(), kern_, s_.view(), mats_, opt_.solid_coupling});
+    if (has_fluid_) force_pass();
+    if (has_elastic_) solid_force();
+    if (has_fluid_ && has_elastic_)
+      B::for_each(n_, FluidOnSolidPass<D>{view_nb(), kern_, s_.view(), mats_, fluid_force_options(),
+                                          opt_.solid_coupling != SolidCoupling::Traction});
+  }
+
+  FluidForceOptions fluid_force_options() const {
     FluidForceOptions fo;
     fo.xsph = Real(opt_.xsph);
     fo.laplacian = opt_.laplacian_correction;
@@ -338,6 +360,18 @@ class Simulation final : public Engine {
     fo.smoothing_length = Real(smoothing_length());
     fo.number_density = opt_.density == DensityMethod::NumberSummation;
     fo.viscosity = !opt_.implicit_viscosity;
+    fo.surface_tension = Real(opt_.surface_tension);
+    fo.contact_line_force = opt_.contact_line_force && has_walls_;
+    return fo;
+  }
+
+  void force_pass() {
+    // Walls and solids present a pressure and a no-slip velocity (boundary/, solid/fluid_coupling.hpp).
+    if (has_walls_ && opt_.wall_pressure == WallPressure::Extrapolated)
+      B::for_each(n_, WallPressurePass<D>{view_nb(), kern_, s_.view(), mats_});
+    if (has_walls_ || has_elastic_)
+      B::for_each(n_, WallVelocityPass<D>{view_nb(), kern_, s_.view(), mats_, opt_.wall_noslip});
+    const FluidForceOptions fo = fluid_force_options();
     if (opt_.surface_tension > 0) {
       const ParticleView<D> v = s_.view();
       if (opt_.geometric_wetting && has_walls_) {
@@ -354,23 +388,26 @@ class Simulation final : public Engine {
       }
       B::for_each(n_, CurvaturePass<D>{view_nb(), kern_, v, mats_, Real(opt_.normal_threshold / smoothing_length()),
                                           opt_.geometric_wetting});
-      fo.surface_tension = Real(opt_.surface_tension);
-      fo.contact_line_force = opt_.contact_line_force && has_walls_;
     }
     B::for_each(n_, FluidForcePass<D>{view_nb(), kern_, s_.view(), mats_, fo});
   }
 
-  // Elastic solids (solid/): displacements (mirrored on clamps), then the elastic acceleration.
+  // Elastic solids (solid/): displacements (mirrored on clamps) and, where the step needs them,
+  // strain and stress; then the elastic acceleration.
   bool stress_form() const { return opt_.solid_formulation == SolidFormulation::Stress; }
-  void solid_pass() {
+  void solid_strain() {
     B::for_each(n_, DisplacementPass<D>{s_.view(), grid_});
     if (has_walls_) B::for_each(n_, ClampDisplacementPass<D>{s_.view(), mats_});
-    if (!stress_form()) {
-      B::for_each(n_, ElasticForcePass<D>{view_nb_reference(), kern_, s_.view(), mats_});
-      return;
-    }
-    B::for_each(n_, StrainStressPass<D>{view_nb_reference(), kern_, s_.view(), mats_});
-    B::for_each(n_, StressForcePass<D>{view_nb_reference(), kern_, s_.view(), mats_});
+    if (stress_form() || has_fluid_)  // the fluid reads the solid's volume change
+      B::for_each(n_, StrainStressPass<D>{view_nb_reference(), kern_, s_.view(), mats_});
+  }
+  void solid_force() {
+    const Real zeta = Real(opt_.solid_damping_rate);
+    const bool traction = has_fluid_ && opt_.solid_coupling == SolidCoupling::Traction;
+    if (traction) B::for_each(n_, AmbientPressurePass<D>{view_nb(), kern_, s_.view(), mats_});
+    if (stress_form())
+      B::for_each(n_, StressForcePass<D>{view_nb_reference(), kern_, s_.view(), mats_, zeta, traction});
+    else B::for_each(n_, ElasticForcePass<D>{view_nb_reference(), kern_, s_.view(), mats_, zeta});
   }
 
   // v <- (I - dt L)^-1 v on the fluid (fluid/viscosity.hpp), L at the current positions with the
@@ -408,12 +445,13 @@ class Simulation final : public Engine {
 
   void evaluate() {
     if (lists_expired()) build_neighbours();
-    if (!has_fluid_) return solid_pass();
+    if (has_elastic_) solid_strain();  // before the fluid's sums, which read the solid's volumes
+    if (!has_fluid_) return forces();
     if (mats_.open.active()) B::for_each(n_, ConvertInletFluid<D>{s_.view(), mats_});
     if (continuity()) B::for_each(n_, EquationOfStatePass<D>{s_.view(), mats_});
     else density_pass();
     open_boundary_state();
-    force_pass();
+    forces();
   }
 
   // Open pressure boundaries (boundary/open_boundary.hpp).
@@ -503,6 +541,7 @@ class Simulation final : public Engine {
   double list_radius_ = 0;
   int n_ = 0;
   double t_ = 0, dt_ = 0, dt_first_ = 0, c_max_ = 0, nu_max_ = 0, rho_over_sigma_ = 0;
+  double dissipated_ = 0;  // J, by the solids' damping
   long steps_ = 0;
   long strain_step_ = -1;  // the step whose strain and stress the fields hold
   bool has_walls_ = false, has_fluid_ = false, has_elastic_ = false;

@@ -28,17 +28,17 @@ struct NeighbourCount {
   const std::uint8_t* material;
   MaterialTable<D> mats;
   PSPH_HD Real operator()(int i) const {
-    if (!mats.is_fluid(material[i])) return Real(0);
+    if (!mats.is_dynamic(material[i])) return Real(0);
     int n = 0;
     nb.for_each(i, [&](int, const Vec<D>&, Real) { ++n; });
     return Real(n);
   }
 };
 template <int D>
-struct IsFluid {
+struct IsDynamic {
   const std::uint8_t* material;
   MaterialTable<D> mats;
-  PSPH_HD Real operator()(int i) const { return mats.is_fluid(material[i]) ? Real(1) : Real(0); }
+  PSPH_HD Real operator()(int i) const { return mats.is_dynamic(material[i]) ? Real(1) : Real(0); }
 };
 
 template <int D>

@@ -25,7 +25,7 @@ struct ContinuityPass {
     const bool fluid_i = mats.is_fluid(mi);
     const Vec<D> v_i = s.v[i];
     const Real rho_i = s.rho[i];
-    if (!fluid_i && (!walls || !s.near_fluid[i])) {
+    if (!fluid_i && (!walls || !s.near_fluid[i] || mats.is_elastic(mi))) {
       s.drho[i] = Real(0);
       return;
     }
@@ -33,7 +33,7 @@ struct ContinuityPass {
     auto pair = [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
       if (!(r > Real(0))) return;
       const Real F = kern.F(r);
-      const Real V_j = s.m[j] / s.rho[j];
+      const Real V_j = mats.volume_of(s, j);
       div += V_j * dot(v_i - s.v[j], rij) * F;  // eq. 53a
       // delta-SPH: 2 delta h_s c sum_j V_j (rho_j - rho_i) (r_ji . grad_i W_ij) / r^2 over fluid
       // pairs (Molteni & Colagrossi 2009, Comput. Phys. Commun. 180:861, eq. 7).

@@ -15,7 +15,8 @@ constexpr const char* kMagic = "PORESPH-CHECKPOINT 1";
 void write_checkpoint_file(const std::string& path, const Checkpoint& c, const std::string& case_name) {
   nlohmann::json head = {{"case", case_name},   {"dimension", c.dimension}, {"particles", c.particles},
                          {"precision", c.precision}, {"time", c.time},      {"last_dt", c.last_dt},
-                         {"first_dt", c.first_dt},   {"steps", c.steps},     {"fields", nlohmann::json::array()}};
+                         {"first_dt", c.first_dt},   {"steps", c.steps},     {"dissipated_energy", c.dissipated_energy},
+                         {"fields", nlohmann::json::array()}};
   for (const auto& f : c.fields)
     head["fields"].push_back({{"name", f.name}, {"element_bytes", f.element_bytes}, {"bytes", f.bytes.size()}});
   const std::string tmp = path + ".partial";
@@ -54,6 +55,7 @@ Checkpoint read_checkpoint_file(const std::string& path) {
     c.last_dt = head.at("last_dt").get<double>();
     c.first_dt = head.at("first_dt").get<double>();
     c.steps = head.at("steps").get<long>();
+    c.dissipated_energy = head.value("dissipated_energy", 0.0);
     for (const auto& f : head.at("fields")) {
       CheckpointField cf;
       cf.name = f.at("name").get<std::string>();

@@ -77,7 +77,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
   // Materials, in file order of their names (toml tables are ordered by key).
   std::map<std::string, int> mat_index;
   std::vector<std::string> walls_without_angle;
-  bool has_liquid = false, has_gas = false, has_elastic = false;
+  bool has_liquid = false, has_gas = false, has_elastic = false, coupled = false;
   // Elastic solids: the stress form by default (solid/stress_form.hpp: any Poisson ratio, free
   // rotations at free surfaces, a per-particle stress law), or the displacement form
   // (solid/elastic_force.hpp, Pazdniakou eq. 17).
@@ -114,7 +114,8 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
         m.props.sound_speed =
             Real(std::sqrt((m.props.bulk_modulus + 4 * m.props.shear_modulus / 3) / m.props.rest_density));
         has_elastic = true;
-      } else if (kind == "fluid") {
+      }
+      if (kind == "fluid") {
         m.props.viscosity = Real(r.non_negative("viscosity"));
         m.props.sound_speed = Real(r.positive("sound_speed"));
         m.props.eos = r.choice("equation_of_state", {"linear", "tait"}, "linear") == "tait" ? EquationOfState::Tait
@@ -125,7 +126,8 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
         m.props.colour = gas ? Real(-1) : Real(1);  // Pazdniakou eq. 6
         (gas ? has_gas : has_liquid) = true;
       } else if (r.has("contact_angle")) {
-        // Measured through the liquid: 0 = fully wetted by the liquid (Pazdniakou eq. 10).
+        // Walls and elastic solids. Measured through the liquid: 0 = fully wetted by the liquid
+        // (Pazdniakou eq. 10).
         const double theta = r.non_negative("contact_angle");
         if (theta > 180) r.fail("contact_angle", "expected an angle in degrees between 0 and 180");
         m.props.colour = Real(std::cos(theta * M_PI / 180));
@@ -142,13 +144,26 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     // §7 item 17). The densest: a wall's volume m/rho follows its pressure through rho0 + p/c^2, so
     // a wall under water with a gas's rest density would shrink by the water's head over 1 kg/m^3.
     // Without fluids, walls only clamp an elastic solid and take its density.
-    if (!has_elastic && solid.has("formulation"))
-      solid.fail("formulation", "expected a material with kind = \"elastic\" for it to apply to");
-    solid.finish();
+    for (const char* key : {"formulation", "damping_rate", "coupling"})
+      if (!has_elastic && solid.has(key))
+        solid.fail(key, "expected a material with kind = \"elastic\" for it to apply to");
     const bool has_fluid = has_liquid || has_gas;
-    if (has_fluid && has_elastic)
-      top.fail("materials", "expected either fluids or elastic solids: the fluid-solid coupling is not available yet");
-    const MaterialKind bulk = has_elastic ? MaterialKind::Elastic : MaterialKind::Fluid;
+    coupled = has_fluid && has_elastic;
+    // Mass-proportional damping a -= zeta v for quasi-static loading (Pazdniakou §3.1.4's Verlet
+    // parameter theta is zeta dt).
+    o.solid_damping_rate = solid.non_negative("damping_rate", 0.0);
+    // The traction needs the stress form's boundary sums; the displacement form couples by pairs.
+    const bool stress = o.solid_formulation == SolidFormulation::Stress;
+    const std::string cp = solid.choice("coupling", {"traction", "pair", "pair_eos"}, stress ? "traction" : "pair");
+    o.solid_coupling = cp == "traction" ? SolidCoupling::Traction : cp == "pair" ? SolidCoupling::Pair : SolidCoupling::PairEos;
+    if (!coupled && solid.has("coupling"))
+      solid.fail("coupling", "expected a case with both fluids and elastic solids for it to apply to");
+    if (!stress && o.solid_coupling == SolidCoupling::Traction)
+      solid.fail("coupling", "expected \"pair\" or \"pair_eos\" with formulation = \"displacement\" (the traction "
+                             "uses the stress form's boundary sums)");
+    solid.finish();
+    // Walls serve the fluid when there is one (its density), else they clamp the solid (its density).
+    const MaterialKind bulk = has_fluid ? MaterialKind::Fluid : MaterialKind::Elastic;
     const SceneMaterial* densest = nullptr;
     for (const auto& m : sc.materials)
       if (m.props.kind == bulk && (!densest || m.props.rest_density > densest->props.rest_density)) densest = &m;
@@ -273,6 +288,13 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     if (o.implicit_tolerance >= 1) r.fail("implicit_tolerance", "expected a relative residual in (0, 1)");
     if (o.implicit_viscosity && o.laplacian_correction == LaplacianCorrection::Tensor)
       r.fail("laplacian_correction", "expected \"trace\" or \"none\" with implicit_viscosity = true (the tensor form is explicit only)");
+    // The solid takes the reaction of each fluid pair force (solid/fluid_coupling.hpp), which needs
+    // the explicit viscous sum and a per-particle (scalar) Laplacian correction.
+    if (coupled && o.implicit_viscosity)
+      r.fail("implicit_viscosity", "expected false in a case with elastic solids and fluids (the solid takes the "
+                                   "reaction of the explicit viscous force)");
+    if (coupled && o.laplacian_correction == LaplacianCorrection::Tensor)
+      r.fail("laplacian_correction", "expected \"trace\" or \"none\" in a case with elastic solids and fluids");
     const double p_b = r.non_negative("background_pressure", 0.0);
     for (auto& m : sc.materials) m.props.background_pressure = Real(p_b);
     if (o.neighbour_skin > 1) r.fail("neighbour_skin", "expected a fraction of the support radius in [0, 1]");

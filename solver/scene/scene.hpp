@@ -18,6 +18,8 @@ enum class DensityMethod { Summation, NormalisedSummation, NumberSummation, Cont
 enum class Integrator { Leapfrog, VelocityVerlet };
 // Elastic solids: the stress form (solid/stress_form.hpp) or the displacement form (solid/elastic_force.hpp).
 enum class SolidFormulation { Stress, Displacement };
+// How fluids and elastic solids exchange forces (solid/fluid_coupling.hpp).
+enum class SolidCoupling { Traction, Pair, PairEos };
 
 struct SceneMaterial {
   std::string name;
@@ -70,6 +72,8 @@ struct SolverOptions {
   bool contact_line_force = true;  // the unbalanced Young force at contact lines (interface/contact_line.hpp)
   // Elastic solids ([solid]).
   SolidFormulation solid_formulation = SolidFormulation::Stress;
+  double solid_damping_rate = 0;  // zeta (1/s): a -= zeta v on elastic particles
+  SolidCoupling solid_coupling = SolidCoupling::Traction;
 };
 
 struct Scene {

@@ -25,15 +25,28 @@ PSPH_HD inline Mat<D> symmetric_part(const Mat<D>& g) {
   return e;
 }
 
+// The bulk modulus with crack closure: damaged in tension only.
+PSPH_HD inline Real effective_bulk_modulus(Real tr_eps, Real k, Real damage) {
+  return tr_eps > Real(0) ? k * (Real(1) - damage) : k;
+}
+
 template <int D>
 PSPH_HD inline Mat<D> small_strain_stress(const Mat<D>& eps, Real k, Real mu, Real damage = 0) {
   const Real tr = trace(eps);
-  const Real k_eff = tr > Real(0) ? k * (Real(1) - damage) : k, mu_eff = mu * (Real(1) - damage);
+  const Real k_eff = effective_bulk_modulus(tr, k, damage), mu_eff = mu * (Real(1) - damage);
   Mat<D> s;
   for (int r = 0; r < D; ++r)
     for (int c = 0; c < D; ++c) s.a[r][c] = Real(2) * mu_eff * eps.a[r][c];
   for (int r = 0; r < D; ++r) s.a[r][r] += (k_eff - Real(2) * mu_eff / Real(3)) * tr;
   return s;
+}
+
+// The solid's pressure -k tr(eps) (compression positive; in 2D plane strain tr(eps) is also the
+// volume change): Pazdniakou eq. 74's c_solid^2 (rho - rho0) with rho = rho0 (1 - tr eps).
+template <int D>
+PSPH_HD inline Real small_strain_pressure(const Mat<D>& eps, Real k, Real damage = 0) {
+  const Real tr = trace(eps);
+  return -effective_bulk_modulus(tr, k, damage) * tr;
 }
 
 // Elastic energy density sigma : eps / 2.

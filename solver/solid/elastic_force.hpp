@@ -46,9 +46,10 @@ struct ElasticForcePass {
   Kernel<D> kern;
   ParticleView<D> s;
   MaterialTable<D> mats;
-  PSPH_HD void operator()(int i) const {
+  Real damping = 0;  // zeta (1/s): a -= zeta v
+  // The elastic acceleration (eq. 17) of elastic particle i.
+  PSPH_HD Vec<D> elastic_acceleration(int i) const {
     const int mi = s.material[i];
-    if (!mats.is_elastic(mi)) return;
     const Real k_i = mats[mi].bulk_modulus, mu_i = mats[mi].shear_modulus;
     const Vec<D> u_i = s.u[i];
     Vec<D> f = Vec<D>::zero();
@@ -60,19 +61,23 @@ struct ElasticForcePass {
         k = harmonic_mean(k_i, mats[mj].bulk_modulus), mu = harmonic_mean(mu_i, mats[mj].shear_modulus);
       f += navier_pair<D>(u_i - s.u[j], rij * (Real(1) / r), k, mu) * (s.m[j] / s.rho[j] * kern.F(r));
     });
-    s.a[i] = f * (Real(1) / s.rho[i]) + mats.body_force_at(mi, s.x[i]);
+    return f * (Real(1) / s.rho[i]);
+  }
+  PSPH_HD void operator()(int i) const {
+    const int mi = s.material[i];
+    if (!mats.is_elastic(mi)) return;
+    s.a[i] = elastic_acceleration(i) + mats.body_force_at(mi, s.x[i]) - s.v[i] * damping;
   }
 };
 
-// Elastic energy of a linear solid, -1/2 m u . a_elastic, with a_elastic = a - g (body force).
+// Elastic energy of a linear solid, -1/2 m u . a_elastic (its own sum again: a also holds body,
+// damping and fluid forces).
 template <int D>
 struct ElasticEnergyOf {
-  ParticleView<D> s;
-  MaterialTable<D> mats;
+  ElasticForcePass<D> pass;
   PSPH_HD Real operator()(int i) const {
-    const int mi = s.material[i];
-    if (!mats.is_elastic(mi)) return Real(0);
-    return Real(-0.5) * s.m[i] * dot(s.u[i], s.a[i] - mats.body_force_at(mi, s.x[i]));
+    if (!pass.mats.is_elastic(pass.s.material[i])) return Real(0);
+    return Real(-0.5) * pass.s.m[i] * dot(pass.s.u[i], pass.elastic_acceleration(i));
   }
 };
 

@@ -19,22 +19,32 @@ struct StressForcePass {
   Kernel<D> kern;
   ParticleView<D> s;
   MaterialTable<D> mats;
+  Real damping = 0;  // zeta (1/s): a -= zeta v
+  // The fluid's traction P_i b_i, b_i = sum_j V_j (g_ij - g_ji) over elastic j, P_i the ambient
+  // pressure (solid/fluid_coupling.hpp): the stresses taken relative to -P_i I.
+  bool traction = false;
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
     if (!mats.is_elastic(mi)) return;
     const Mat<D> sigma_i = s.stress[i];
+    const Real p_i = traction ? s.p_ambient[i] : Real(0);
     Vec<D> f = Vec<D>::zero();
     SolidNeighbours<D>{nb, s, mats}.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
       if (r <= Real(0)) return;
       const Real W = kern.W(r);
       const Vec<D> gradW = kern.grad(rij, r);  // grad_i W_ij; grad_j W_ji = -grad_i W_ij
-      Vec<D> t = sigma_i * corrected_gradient(s, i, W, gradW);
-      if (mats.is_elastic(s.material[j])) t -= s.stress[j] * corrected_gradient(s, j, W, gradW * Real(-1));
+      const Vec<D> g_ij = corrected_gradient(s, i, W, gradW);
+      Vec<D> t = sigma_i * g_ij;
+      if (mats.is_elastic(s.material[j])) {
+        const Vec<D> g_ji = corrected_gradient(s, j, W, gradW * Real(-1));
+        t -= s.stress[j] * g_ji;
+        if (traction) t += (g_ij - g_ji) * p_i;
+      }
       f += t * (s.m[j] / s.rho[j]);
     });
     Vec<D> a = f * (Real(1) / s.rho[i]);
     if (s.mirror[i] >= 0) a += clamp_reaction(nb, kern, s, mats, s.index_of_id[s.mirror[i]]) * (Real(1) / s.m[i]);
-    s.a[i] = a + mats.body_force_at(mi, s.x[i]);
+    s.a[i] = a + mats.body_force_at(mi, s.x[i]) - s.v[i] * damping;
   }
 };
 

@@ -19,6 +19,7 @@ struct Checkpoint {
   std::string precision;  // "double" or "single"
   double time = 0, last_dt = 0, first_dt = 0;
   long steps = 0;
+  double dissipated_energy = 0;  // by the solids' damping, from the run's start (J)
   std::vector<CheckpointField> fields;
 };
 

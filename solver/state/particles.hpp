@@ -13,6 +13,7 @@ namespace psph {
 
 template <int D>
 struct ParticleView {
+  static constexpr int dimension = D;
   int n = 0;
   Vec<D>* x;          // position
   Vec<D>* v;          // velocity (prescribed for walls)
@@ -43,6 +44,10 @@ struct ParticleView {
   Mat<D>* kcorr;
   std::int32_t* mirror;       // clamps: id of the mirror partner, -1 if none (solid/clamp_partners.hpp)
   std::int32_t* index_of_id;  // current index of each id (solid/clamp.hpp)
+  // Fluids with elastic solids only (null otherwise): solid/fluid_coupling.hpp.
+  Real* visc_scale;  // a fluid particle's Laplacian correction D / lambda of the last force pass
+  std::uint8_t* fluid_contact;  // an elastic particle with fluid within its support
+  Real* p_ambient;              // the fluid's pressure carried into an elastic body's surface layer
 };
 
 template <class T, class B>
@@ -77,7 +82,8 @@ class ParticleState {
                            number_density.data(),   material.data(), id.data(), near_fluid.data(),
                            colour.data(), colour_gradient.data(), curvature.data(), x0.data(), u.data(),
                            strain.data(), stress.data(), shepard.data(), shepard_grad.data(), kcorr.data(),
-                           mirror.data(), index_of_id.data()};
+                           mirror.data(), index_of_id.data(), visc_scale.data(),
+                           fluid_contact.data(), p_ambient.data()};
   }
 
   // Allocates and registers the interface fields (a case with two fluids and surface tension).
@@ -105,6 +111,14 @@ class ParticleState {
     reg(mirror, FieldType::Int, 1, "clamp_mirror", "-", "id of a clamp wall's mirror partner and back, -1 if none");
   }
 
+  // A fluid with elastic solids: the fluid force pass keeps each particle's viscous correction for
+  // the solid's reaction, the solid its contact and ambient pressure (solid/fluid_coupling.hpp);
+  // written and read within one force evaluation: not registered.
+  void enable_coupling() {
+    visc_scale.resize(n_), fluid_contact.resize(n_), p_ambient.resize(n_);
+    visc_scale.zero(), fluid_contact.zero(), p_ambient.zero();
+  }
+
   // Reorders every registered field: field[i] <- field[perm[i]].
   void permute(const int* perm) {
     for (const auto& f : registry_.all()) f.permute(perm);
@@ -124,6 +138,8 @@ class ParticleState {
   DeviceArray<Mat<D>, B> kcorr;
   DeviceArray<std::int32_t, B> mirror;
   DeviceArray<std::int32_t, B> index_of_id;  // not registered: recomputed after every reordering
+  DeviceArray<Real, B> visc_scale, p_ambient;  // empty unless enable_coupling()
+  DeviceArray<std::uint8_t, B> fluid_contact;
 
  private:
   template <class T>

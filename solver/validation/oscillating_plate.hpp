@@ -11,8 +11,10 @@
 namespace psph {
 
 // The plate with its initial velocity; `speed_ratio` is V (the tip speed over the P-wave speed);
-// `spacing` > 0 replaces the case's (the support keeps its size in spacings).
-Case oscillating_plate_case(double speed_ratio = 0.001, double spacing = 0);
+// `spacing` > 0 replaces the case's (the support keeps its size in spacings). The displacement
+// form takes nu = 0.2 (below its bound of 1/4).
+Case oscillating_plate_case(double speed_ratio = 0.001, double spacing = 0,
+                            SolidFormulation form = SolidFormulation::Stress);
 
 struct PlateVibration {
   double omega = 0;         // measured (rad/s)

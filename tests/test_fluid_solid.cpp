@@ -1,0 +1,138 @@
+// Fluid-solid coupling (solid/fluid_coupling.hpp) and the solids' damping (solid/damping.hpp):
+// exact momentum exchange of the pair coupling, the traction coupling's exact equilibrium under a
+// uniform pressure, and the energy the damping takes.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "case_text.hpp"
+#include "engine/engine.hpp"
+#include "scene/scene_builder.hpp"
+#include "validation/vibrating_rod.hpp"
+
+using namespace psph;
+using psph::test::replaced;
+
+namespace {
+
+// A 2D periodic box of water (16 spacings) around a square block of clay (6 spacings).
+const std::string kBlock = R"(
+[case]
+name = "block"
+dimension = 2
+[domain]
+lower = [0.0, 0.0]
+upper = [0.016, 0.016]
+periodic = [true, true]
+[discretisation]
+spacing = 1.0e-3
+support_radius = 2.0e-3
+[materials.water]
+kind = "fluid"
+density = 1000.0
+viscosity = 1.0
+sound_speed = 30.0
+[materials.clay]
+kind = "elastic"
+density = 2000.0
+young_modulus = 1.0e6
+poisson_ratio = 0.3
+[solid]
+[solver]
+[time]
+end = 0.005
+[[geometry]]
+shape = "box"
+lower = [0.0, 0.0]
+upper = [0.016, 0.016]
+material = "water"
+velocity = [0.1, 0.05]
+[[geometry]]
+shape = "box"
+lower = [0.005, 0.005]
+upper = [0.011, 0.011]
+material = "clay"
+)";
+
+std::unique_ptr<Engine> engine_of(const std::string& text) {
+  Case c = load_case_text(text, "block.toml");
+  build_particles(c);
+  return make_engine(c.scene, "cpu");
+}
+
+// The field "material" holds indices into the materials sorted by name: clay 0, water 1.
+constexpr double kClay = 0, kWater = 1;
+
+std::array<double, 2> momentum(Engine& e) {
+  const std::vector<double> m = e.field("mass"), v = e.field("velocity");
+  std::array<double, 2> p{0, 0};
+  for (int i = 0; i < e.particles(); ++i) p[0] += m[i] * v[2 * i], p[1] += m[i] * v[2 * i + 1];
+  return p;
+}
+
+}  // namespace
+
+// With the pair coupling every force between fluid and solid has its reaction: the momentum of
+// water and clay together stays what it was (the viscous sum without its per-particle correction,
+// which is not antisymmetric), while the water drags the block along.
+TEST(FluidSolid, PairCouplingExchangesMomentumExactly) {
+  auto e = engine_of(replaced(replaced(kBlock, "[solid]", "[solid]\ncoupling = \"pair\""), "[solver]",
+                              "[solver]\nlaplacian_correction = \"none\""));
+  const std::array<double, 2> p0 = momentum(*e);
+  e->run_until(0.005);
+  const std::array<double, 2> p1 = momentum(*e);
+  const std::vector<double> mat = e->field("material"), v = e->field("velocity");
+  double block_vx = 0;
+  int n = 0;
+  for (int i = 0; i < e->particles(); ++i)
+    if (mat[i] == kClay) block_vx += v[2 * i], ++n;
+  block_vx /= n;
+  std::printf("momentum change over %ld steps: %.2e, %.2e of %.3e; block velocity %.4f m/s\n", e->steps(),
+              p1[0] / p0[0] - 1, p1[1] / p0[1] - 1, p0[0], block_vx);
+  EXPECT_NEAR(p1[0] / p0[0], 1.0, 1e-10);
+  EXPECT_NEAR(p1[1] / p0[1], 1.0, 1e-10);
+  EXPECT_GT(block_vx, 0.01);  // dragged from rest towards the water's 0.1 m/s
+}
+
+// Water at rest at a background pressure p around an unstrained block: with the traction coupling
+// the block settles to the stress -p I, particle by particle (plane strain: sigma_zz aside).
+TEST(FluidSolid, TractionCouplingHoldsAUniformPressure) {
+  std::string text = replaced(kBlock, "velocity = [0.1, 0.05]\n", "");
+  text = replaced(text, "[solver]", "[solver]\nbackground_pressure = 500.0");
+  text = replaced(text, "[solid]", "[solid]\ndamping_rate = 5.0e3");
+  text = replaced(text, "end = 0.005", "end = 0.02");
+  auto e = engine_of(text);
+  e->run_until(0.02);
+  const std::vector<double> mat = e->field("material"), p = e->field("pressure"), s = e->field("stress");
+  double p_fluid = 0;
+  int n = 0;
+  for (int i = 0; i < e->particles(); ++i)
+    if (mat[i] == kWater) p_fluid += p[i], ++n;
+  p_fluid /= n;
+  double worst = 0;
+  for (int i = 0; i < e->particles(); ++i)
+    if (mat[i] == kClay)
+      for (int k = 0; k < 4; ++k) worst = std::max(worst, std::fabs(s[4 * i + k] + (k == 0 || k == 3 ? p_fluid : 0)));
+  std::printf("fluid pressure %.3f Pa; largest |sigma + p I| in the block %.3e Pa\n", p_fluid, worst);
+  EXPECT_GT(p_fluid, 100.0);
+  EXPECT_LT(worst, 1e-3 * p_fluid);
+}
+
+// The damping's monitor: kinetic + elastic + dissipated energy stays the initial energy while the
+// damping takes most of it.
+TEST(FluidSolid, DampingEnergyIsAccountedFor) {
+  Case c = vibrating_rod_case(1, false);
+  c.scene.options.solid_damping_rate = 2e4;  // ~ the mode's angular frequency
+  auto e = make_engine(c.scene, "cpu");
+  auto total = [&] {
+    const StepStats s = e->stats();
+    return std::array<double, 2>{s.kinetic_energy + s.elastic_energy, s.dissipated_energy};
+  };
+  const double e0 = total()[0];
+  e->run_until(2e-4);
+  const std::array<double, 2> t = total();
+  std::printf("after %ld steps: kinetic + elastic %.3f, dissipated %.3f of the initial energy\n", e->steps(), t[0] / e0,
+              t[1] / e0);
+  EXPECT_LT(t[0], 0.5 * e0);
+  EXPECT_NEAR((t[0] + t[1]) / e0, 1.0, 0.01);
+}
