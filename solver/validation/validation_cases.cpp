@@ -9,6 +9,7 @@
 #include "validation/capillary_entry.hpp"
 #include "validation/channel_flow.hpp"
 #include "validation/elastic_cube.hpp"
+#include "validation/lame_cylinder.hpp"
 #include "validation/laplace_bubble.hpp"
 #include "validation/operator_checks.hpp"
 #include "validation/oscillating_plate.hpp"
@@ -296,6 +297,24 @@ std::vector<ValidationRecord> elastic_cube(const ValidationContext& ctx) {
   return out;
 }
 
+// Radial and hoop stress of a ring pressurised by the water inside it against Lame, relative to
+// the pressure, over the particles a support and more from both surfaces. Falls short of the
+// issue's 3 % (VALIDATION.md): the rows next to both surfaces carry too little hoop stress and the
+// interior makes up for it (the hoop force across a section is right to 0.5 %); the error halves
+// with the spacing. Not in CI until it passes.
+std::vector<ValidationRecord> lame_cylinder(const ValidationContext& ctx) {
+  const LameComparison r = run_lame_cylinder(lame_cylinder_case(ctx.full ? 0.25e-3 : 0), ctx.backend);
+  if (ctx.log)
+    *ctx.log << "  p = " << r.pressure << " Pa, a = " << r.inner << " m, b = " << r.outer << " m; |error| / p: radial rms "
+             << r.radial_rms << " (max " << r.radial_error << "), hoop rms " << r.hoop_rms << " (max " << r.hoop_error
+             << ") over " << r.compared << " particles; kinetic energy left " << r.kinetic_energy << " J; "
+             << r.particles << " particles, " << r.steps << " steps, " << r.seconds << " s\n";
+  return {make_record("lame_cylinder_2d", "rms |sigma_rr - Lame| / p, a support from both surfaces", r.radial_rms, 0.0,
+                      r.radial_rms, 0.03),
+          make_record("lame_cylinder_2d", "rms |sigma_tt - Lame| / p, a support from both surfaces", r.hoop_rms, 0.0,
+                      r.hoop_rms, 0.03)};
+}
+
 }  // namespace
 
 const std::vector<ValidationCase>& validation_cases() {
@@ -334,6 +353,8 @@ const std::vector<ValidationCase>& validation_cases() {
        oscillating_plate},
       {"elastic_cube_3d", "Pazdniakou 2018 §4.5 elastic cube compressed by fluid pressure: bulk modulus (0.5 %)",
        elastic_cube},
+      {"lame_cylinder_2d", "thick-walled cylinder pressurised by fluid: radial and hoop stress against Lame (3 %)",
+       lame_cylinder},
   };
   return cases;
 }
