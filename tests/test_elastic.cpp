@@ -11,6 +11,7 @@
 #include "scene/embedded_cases.hpp"
 #include "solid/constitutive.hpp"
 #include "solid/elastic_force.hpp"
+#include "validation/oscillating_plate.hpp"
 #include "validation/vibrating_rod.hpp"
 
 using namespace psph;
@@ -194,4 +195,22 @@ TEST(Elastic, DamageDegradesTheModuliButCracksCloseInCompression) {
   for (int r = 0; r < 3; ++r) squeeze.a[r][r] = Real(-1e-3);  // isotropic compression
   s = small_strain_stress(squeeze, k, mu, Real(1));
   for (int r = 0; r < 3; ++r) EXPECT_NEAR(s.a[r][r], -3 * k * 1e-3, 1e-12);  // sigma = k tr(eps)
+}
+
+// A solid run past its stable time step stops with a diagnostic: the displacement-form plate at
+// dt_factor 4 (stable up to 3.5, BENCHMARKS.md) grows its energy by orders of magnitude before
+// anything overflows; the health check stops it once a particle outruns the P-wave speed.
+TEST(Elastic, AnUnstableSolidStopsWithADiagnostic) {
+  Case c = oscillating_plate_case(0.001, 0, SolidFormulation::Displacement);
+  c.scene.options.dt_factor = 4;
+  auto e = make_engine(c.scene, "cpu");
+  std::string what;
+  try {
+    e->run_until(1.0);
+  } catch (const InstabilityError& err) {
+    what = err.what();
+  }
+  std::printf("stopped at t = %.4f s after %ld steps: %s\n", e->time(), e->steps(), what.c_str());
+  EXPECT_NE(what.find("faster than its P-wave speed"), std::string::npos) << what;
+  EXPECT_LT(e->time(), 1.0);
 }

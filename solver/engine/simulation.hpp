@@ -516,8 +516,11 @@ class Simulation final : public Engine {
     const int bad =
         B::template max_of<int>(n_, BadParticle<D>{s_.view(), grid_, mats_, Real(density_limit())});
     const std::string when = " at t = " + std::to_string(t_) + " s, step " + std::to_string(steps_);
-    if (bad == 3) throw InstabilityError("non-finite particle state (NaN or Inf)" + when);
-    if (bad == 2) throw InstabilityError("a particle left the domain through a closed side" + when);
+    if (bad == 4) throw InstabilityError("non-finite particle state (NaN or Inf)" + when);
+    if (bad == 3) throw InstabilityError("a particle left the domain through a closed side" + when);
+    if (bad == 2)
+      throw InstabilityError("an elastic particle moves faster than its P-wave speed" + when +
+                             ": the solid went unstable (lower solver.dt_factor)");
     if (bad == 1)
       throw InstabilityError("a fluid density is more than " + std::to_string(100 * opt_.max_density_deviation) +
                              " % off its reference" + when +

@@ -34,8 +34,10 @@ struct DriftPass {
   }
 };
 
-// 3: state not finite; 2: left the domain through a closed side; 1: a fluid density off its
-// reference by more than `max_density_deviation` (no longer weakly compressible); 0: healthy.
+// 4: state not finite; 3: left the domain through a closed side; 2: an elastic particle faster
+// than its P-wave speed (strains of order one: an unstable solid grows its energy for long before
+// it overflows); 1: a fluid density off its reference by more than `max_density_deviation` (no
+// longer weakly compressible); 0: healthy.
 template <int D>
 struct BadParticle {
   ParticleView<D> s;
@@ -45,9 +47,11 @@ struct BadParticle {
   PSPH_HD int operator()(int i) const {
     Real sum = s.rho[i];
     for (int k = 0; k < D; ++k) sum += s.x[i][k] + s.v[i][k] + s.a[i][k];
-    if (!is_finite(sum)) return 3;
-    if (!grid.inside(s.x[i])) return 2;
-    return mats.is_fluid(s.material[i]) && fabs(s.rho[i] / s.rho0[i] - Real(1)) > max_density_deviation ? 1 : 0;
+    if (!is_finite(sum)) return 4;
+    if (!grid.inside(s.x[i])) return 3;
+    const int m = s.material[i];
+    if (mats.is_elastic(m) && norm2(s.v[i]) > mats[m].sound_speed * mats[m].sound_speed) return 2;
+    return mats.is_fluid(m) && fabs(s.rho[i] / s.rho0[i] - Real(1)) > max_density_deviation ? 1 : 0;
   }
 };
 
