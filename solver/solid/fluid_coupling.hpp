@@ -8,18 +8,18 @@
 //             neighbours, the boundary sum of the stress form (solid/stress_form.hpp), and P_i the
 //             fluid's pressure carried into the body's surface layer (b_i reaches a support deeper
 //             than the fluid: AmbientPressurePass). A fluid at rest at pressure p and a solid at
-//             stress -p I are then in exact equilibrium, particle by particle. The reaction of the
-//             pressure pairs instead loads a body's surface with p (1 - O(h/L)) (measured: an
-//             elastic cube of 10 spacings 7 % too stiff inside), the fluid's uncorrected pair sums
-//             missing a strip along the solid's edges that its corrected gradients count. Momentum
-//             is then exchanged exactly at rest, to O(h/L) of the pressure force in motion.
+//             stress -p I are then in exact equilibrium, particle by particle; momentum is
+//             exchanged exactly at rest, to O(h/L) of the pressure force in motion. The reaction
+//             of the pressure pairs instead loads a body's surface with p (1 - O(h/L)) (measured:
+//             an elastic cube of 10 spacings 7 % too stiff inside), the fluid's uncorrected pair
+//             sums missing a strip along the solid's edges that its corrected gradients count.
 //   pair:     the reaction of every pair force (action and reaction, exact momentum exchange),
 //             with the extrapolated pressure;
 //   pair_eos: the same with the solid's own pressure c_solid^2 (rho - rho0) = -k tr(eps)
 //             (Pazdniakou eq. 74 with the density change of the strain).
 // The extrapolated pressure is Adami, Hu & Adams (2012) eq. 27 without the particle's own
 // acceleration: with it, the traction feeds the last step's acceleration back into the next one
-// (an added-mass loop: the cube below blew up in 54 steps).
+// (an added-mass loop: the elastic cube of VALIDATION.md blew up in 54 steps).
 #include "boundary/wall_pressure.hpp"
 #include "fluid/momentum.hpp"
 #include "scene/scene.hpp"
