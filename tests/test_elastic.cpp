@@ -104,7 +104,7 @@ TEST(Elastic, CaseKeys) {
                  "solid.formulation");
   EXPECT_EQ(error_of(rod + "\n[solid]\nformulation = \"displacement\"\n"), "");
   expect_refused(rod, "young_modulus = 2.0e11", "young_modulus = -1.0", "materials.steel.young_modulus");
-  // Damping and the coupling pressure.
+  // Damping and the fluid coupling.
   expect_refused(rod + "\n[solid]\ndamping_rate = 10.0\n", "damping_rate = 10.0", "damping_rate = -1.0", "solid.damping_rate");
   expect_refused(rod + "\n[solid]\ncoupling = \"pair\"\n", "", "",
                  "solid.coupling: expected a case with both fluids and elastic solids");

@@ -8,6 +8,7 @@
 #include "scene/case_file.hpp"
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
+#include "validation/oscillating_plate.hpp"
 
 namespace psph {
 
@@ -37,17 +38,15 @@ std::vector<BenchSpec> bench_specs(const std::string& backend, bool quick) {
   dr.embedded_case = "drainage_2d";
   dr.steps = quick ? 50 : 1000;
   s.push_back(dr);
-  // Elastic solids: the cantilever plate in each formulation (the displacement form at nu = 0.2,
-  // below its bound), and the cube coupled with water.
-  BenchSpec plate;
-  plate.name = "oscillating_plate_2d_stress";
-  plate.embedded_case = "oscillating_plate_2d";
-  plate.steps = quick ? 100 : 2000;
-  s.push_back(plate);
-  plate.name = "oscillating_plate_2d_displacement";
-  plate.text_keys = {{"solid.formulation", "displacement"}};
-  plate.number_keys = {{"materials.plate.poisson_ratio", 0.2}};
-  s.push_back(plate);
+  // Elastic solids: the cantilever plate vibrating in each formulation (the displacement form at
+  // nu = 0.2, below its bound), and the cube coupled with water.
+  for (SolidFormulation form : {SolidFormulation::Stress, SolidFormulation::Displacement}) {
+    BenchSpec plate;
+    plate.name = form == SolidFormulation::Stress ? "oscillating_plate_2d_stress" : "oscillating_plate_2d_displacement";
+    plate.build = [form] { return oscillating_plate_case(0.001, 0, form); };
+    plate.steps = quick ? 100 : 2000;
+    s.push_back(plate);
+  }
   BenchSpec cube;
   cube.name = "elastic_cube_3d";
   cube.embedded_case = "elastic_cube_3d";
@@ -58,12 +57,8 @@ std::vector<BenchSpec> bench_specs(const std::string& backend, bool quick) {
 
 namespace {
 
-Scene embedded_scene(const BenchSpec& spec) {
-  const std::string file = "cases/" + spec.embedded_case + ".toml";
-  toml::table tbl = toml::parse(embedded_case_text(spec.embedded_case), std::string_view(file));
-  for (const auto& [key, value] : spec.text_keys) set_case_value(tbl, key, toml::value<std::string>(value));
-  for (const auto& [key, value] : spec.number_keys) set_case_value(tbl, key, toml::value<double>(value));
-  Case c = parse_case(tbl, file);
+Scene embedded_scene(const std::string& name) {
+  Case c = load_case_text(embedded_case_text(name), "cases/" + name + ".toml");
   build_particles(c);
   return c.scene;
 }
@@ -81,7 +76,9 @@ Scene fluid_box(const BenchSpec& spec) {
 }
 
 BenchResult run_bench(const BenchSpec& spec, const std::string& backend, std::ostream* log) {
-  const Scene sc = spec.embedded_case.empty() ? fluid_box(spec) : embedded_scene(spec);
+  const Scene sc = spec.build                   ? spec.build().scene
+                   : spec.embedded_case.empty() ? fluid_box(spec)
+                                                : embedded_scene(spec.embedded_case);
   const int D = sc.dimension;
   int fluid = 0, moving = 0;
   for (int m : sc.material) {

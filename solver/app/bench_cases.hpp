@@ -2,17 +2,18 @@
 // Benchmark scenes: a periodic box of fluid with a shear-wave velocity field (every particle has a
 // full neighbourhood and moves), in 2D and 3D, over a range of sizes.
 #include <ostream>
+#include <functional>
 #include <string>
-#include <utility>
 #include <vector>
+
+#include "scene/case_file.hpp"
 
 namespace psph {
 
 struct BenchSpec {
   std::string name;
   std::string embedded_case;  // non-empty: time this case file instead of the fluid box
-  std::vector<std::pair<std::string, std::string>> text_keys;  // case values replaced ("solid.formulation")
-  std::vector<std::pair<std::string, double>> number_keys;
+  std::function<Case()> build;  // set: time the case it builds
   int dimension = 3;
   long target_particles = 10000;
   double support_per_spacing = 2.0;  // Pazdniakou's resolution: support = 2 spacings

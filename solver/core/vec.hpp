@@ -88,6 +88,13 @@ PSPH_HD inline void add_outer(Mat<D>& m, const Vec<D>& a, const Vec<D>& b, Real 
 }
 
 template <int D>
+PSPH_HD inline Real trace(const Mat<D>& m) {
+  Real t = 0;
+  for (int r = 0; r < D; ++r) t += m.a[r][r];
+  return t;
+}
+
+template <int D>
 PSPH_HD inline Real determinant(const Mat<D>& m) {
   if constexpr (D == 1) {
     return m.a[0][0];

@@ -54,8 +54,10 @@ struct DensitySummationPass {
       const Real ratio = open ? buffer_density_ratio(mats, s.material[j], s.x[j], s.rho0[j]) : Real(1);
       // An elastic neighbour fills its volume with i's rest density (no deficit at the interface,
       // whatever the solid's own density).
-      const Real m_j = solids && mats.is_elastic(s.material[j]) ? s.rho0[i] * mats.volume_of(s, j) : s.m[j];
-      num += (number ? m_i : m_j) * w * ratio;
+      const Real m_j = number                                    ? m_i
+                       : solids && mats.is_elastic(s.material[j]) ? s.rho0[i] * mats.volume_of(s, j)
+                                                                  : s.m[j];
+      num += m_j * w * ratio;
       if (normalised) den += w / s.number_density[j];
     });
     const Real rho = num / den;

@@ -57,10 +57,7 @@ struct MaterialTable {
   template <class View>
   PSPH_HD PSPH_PAIR Real volume_of(const View& s, int j) const {
     const Real v = s.m[j] / s.rho[j];
-    if (!is_elastic(s.material[j])) return v;
-    Real tr = 0;
-    for (int k = 0; k < View::dimension; ++k) tr += s.strain[j].a[k][k];
-    return v * (Real(1) + tr);
+    return is_elastic(s.material[j]) ? v * (Real(1) + trace(s.strain[j])) : v;
   }
   // Particles that the forces move (the others are walls, moved only by their prescribed velocity).
   PSPH_HD bool is_dynamic(int k) const { return m[k].kind != MaterialKind::Wall; }

@@ -35,7 +35,8 @@ struct FluidParticle {
 };
 
 // The accelerations of fluid particle i from neighbour j: pressure, artificial viscosity and
-// viscous, the last before the Laplacian correction. dw_r = F_ij (grad_i W_ij = r_ij F_ij).
+// viscous, the last before the Laplacian correction. dw_r = F_ij (grad_i W_ij = r_ij F_ij); V_j
+// = mats.volume_of(s, j).
 template <int D>
 struct FluidPairTerms {
   Vec<D> pressure, artificial, viscous;
@@ -43,12 +44,11 @@ struct FluidPairTerms {
 template <int D>
 PSPH_HD PSPH_PAIR inline FluidPairTerms<D> fluid_pair_terms(const FluidParticle<D>& fi, const ParticleView<D>& s,
                                                   const MaterialTable<D>& mats, const FluidForceOptions& opt, int j,
-                                                  const Vec<D>& rij, Real r, Real dw_r) {
+                                                  const Vec<D>& rij, Real r, Real dw_r, Real V_j) {
   const int mj = s.material[j];
   const Real rho_j = s.rho[j];
   const Real m_j = s.m[j];
   const Real inv_rho_j = Real(1) / rho_j;
-  const Real V_j = mats.volume_of(s, j);
   const Vec<D> vij = fi.v - s.v[j];
   const bool fluid_j = mats.is_fluid(mj);
   // Pressure, symmetric form (Pazdniakou eq. 54b in eq. 57). With number density the particle
@@ -117,7 +117,7 @@ struct FluidForcePass {
       const Real V_j = mats.volume_of(s, j);
       const Real dw_r = kern.F(r);  // grad_i W_ij = r_ij F_ij
       const bool fluid_j = mats.is_fluid(mj);
-      const FluidPairTerms<D> t = fluid_pair_terms(fi, s, mats, opt, j, rij, r, dw_r);
+      const FluidPairTerms<D> t = fluid_pair_terms(fi, s, mats, opt, j, rij, r, dw_r, V_j);
       acc += t.pressure + t.artificial;
       visc += tensor ? t.viscous * LaplacianTensor<D>::weight(A, rij) : t.viscous;
       lambda -= V_j * r * r * dw_r;

@@ -162,7 +162,6 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       solid.fail("coupling", "expected \"pair\" or \"pair_eos\" with formulation = \"displacement\" (the traction "
                              "uses the stress form's boundary sums)");
     solid.finish();
-    // Walls serve the fluid when there is one (its density), else they clamp the solid (its density).
     const MaterialKind bulk = has_fluid ? MaterialKind::Fluid : MaterialKind::Elastic;
     const SceneMaterial* densest = nullptr;
     for (const auto& m : sc.materials)
@@ -443,6 +442,14 @@ void set_case_value(toml::table& tbl, const std::string& dotted_key, const toml:
     t = next->as_table();
     start = dot + 1;
   }
+}
+
+void set_case_spacing(toml::table& tbl, double spacing) {
+  toml::table& disc = *tbl["discretisation"].as_table();
+  const double f = spacing / *disc["spacing"].value<double>();
+  for (const char* key : {"support_radius", "smoothing_length"})
+    if (const auto v = disc[key].value<double>()) disc.insert_or_assign(key, *v * f);
+  disc.insert_or_assign("spacing", spacing);
 }
 
 }  // namespace psph

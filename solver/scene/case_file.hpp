@@ -60,5 +60,7 @@ Case load_case_text(const std::string& text, const std::string& file);
 // Sets a dotted key (e.g. "discretisation.spacing") in a parsed table: for validation and benchmark
 // variants of a case.
 void set_case_value(toml::table& tbl, const std::string& dotted_key, const toml::node& value);
+// Replaces the case's spacing; its support radius (or smoothing length) keeps its size in spacings.
+void set_case_spacing(toml::table& tbl, double spacing);
 
 }  // namespace psph

@@ -9,13 +9,6 @@
 
 namespace psph {
 
-template <int D>
-PSPH_HD inline Real trace(const Mat<D>& m) {
-  Real t = 0;
-  for (int r = 0; r < D; ++r) t += m.a[r][r];
-  return t;
-}
-
 // (g + g^T) / 2.
 template <int D>
 PSPH_HD inline Mat<D> symmetric_part(const Mat<D>& g) {

@@ -79,11 +79,12 @@ struct FluidOnSolidPass {
   bool pressure;
   PSPH_HD void operator()(int i) const {
     if (!mats.is_elastic(s.material[i])) return;
+    const Real V_i = mats.volume_of(s, i);
     Vec<D> f = Vec<D>::zero();
     nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
       if (!(r > Real(0)) || !mats.moves_freely(s.material[j], s.x[j])) return;
       const FluidParticle<D> fj(s, mats, j);
-      const FluidPairTerms<D> t = fluid_pair_terms(fj, s, mats, opt, i, rij * Real(-1), r, kern.F(r));
+      const FluidPairTerms<D> t = fluid_pair_terms(fj, s, mats, opt, i, rij * Real(-1), r, kern.F(r), V_i);
       const Vec<D> a_j = t.artificial + t.viscous * (opt.viscosity ? s.visc_scale[j] : Real(0));
       f -= (pressure ? a_j + t.pressure : a_j) * s.m[j];
     });

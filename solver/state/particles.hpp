@@ -13,7 +13,6 @@ namespace psph {
 
 template <int D>
 struct ParticleView {
-  static constexpr int dimension = D;
   int n = 0;
   Vec<D>* x;          // position
   Vec<D>* v;          // velocity (prescribed for walls)

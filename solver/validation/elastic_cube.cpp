@@ -16,14 +16,7 @@ constexpr const char* kFile = "cases/elastic_cube_3d.toml";
 
 Case elastic_cube_case(double spacing, SolidCoupling coupling, double background_pressure) {
   toml::table tbl = toml::parse(embedded_case_text("elastic_cube_3d"), std::string_view(kFile));
-  if (spacing > 0) {
-    // The same box and cube, resolved by more particles: lengths stay, the spacing, the support
-    // and the damping time follow.
-    auto& disc = *tbl["discretisation"].as_table();
-    const double f = spacing / *disc["spacing"].value<double>();
-    disc.insert_or_assign("support_radius", *disc["support_radius"].value<double>() * f);
-    disc.insert_or_assign("spacing", spacing);
-  }
+  if (spacing > 0) set_case_spacing(tbl, spacing);  // the same box and cube, more particles
   if (coupling != SolidCoupling::Traction)
     tbl["solid"].as_table()->insert_or_assign("coupling", coupling == SolidCoupling::Pair ? "pair" : "pair_eos");
   if (background_pressure > 0) tbl["solver"].as_table()->insert_or_assign("background_pressure", background_pressure);

@@ -17,11 +17,7 @@ constexpr const char* kFile = "cases/lame_cylinder_2d.toml";
 
 Case lame_cylinder_case(double spacing) {
   toml::table tbl = toml::parse(embedded_case_text("lame_cylinder_2d"), std::string_view(kFile));
-  if (spacing > 0) {
-    auto& disc = *tbl["discretisation"].as_table();
-    disc.insert_or_assign("support_radius", *disc["support_radius"].value<double>() / *disc["spacing"].value<double>() * spacing);
-    disc.insert_or_assign("spacing", spacing);
-  }
+  if (spacing > 0) set_case_spacing(tbl, spacing);
   Case c = parse_case(tbl, kFile);
   build_particles(c);
   return c;

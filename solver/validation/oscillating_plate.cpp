@@ -32,11 +32,7 @@ const Material& plate_material(const Scene& sc) {
 
 Case oscillating_plate_case(double speed_ratio, double spacing, SolidFormulation form) {
   toml::table tbl = toml::parse(embedded_case_text("oscillating_plate_2d"), std::string_view("cases/oscillating_plate_2d.toml"));
-  if (spacing > 0) {
-    auto& disc = *tbl["discretisation"].as_table();
-    disc.insert_or_assign("support_radius", *disc["support_radius"].value<double>() / *disc["spacing"].value<double>() * spacing);
-    disc.insert_or_assign("spacing", spacing);
-  }
+  if (spacing > 0) set_case_spacing(tbl, spacing);
   if (form == SolidFormulation::Displacement) {
     set_case_value(tbl, "solid.formulation", toml::value<std::string>("displacement"));
     set_case_value(tbl, "materials.plate.poisson_ratio", toml::value<double>(0.2));

@@ -202,14 +202,11 @@ std::vector<ValidationRecord> capillary_entry(const ValidationContext& ctx) {
   return out;
 }
 
-// Longitudinal modes of a 1D rod (Deptulski 2021 Ch. 3 at lambda/L = 0.05): beta^2 against the
-// local continuum (k pi)^2, ((2k - 1) pi / 2)^2 within 0.5 %, and the total energy (kinetic +
-// elastic) over three periods within 1 %. The thesis' own SPH values (Tables 2-3, total-Lagrangian
-// form) are printed beside: its non-local softening at this support is larger than the
-// displacement form's (VALIDATION.md).
-// Deptulski Ch. 3 (Tables 2-3): the stress form (the default) against the thesis' own TLSPH beta^2,
-// which carries the same non-local softening (within 0.5 % at lambda/L = 0.05, 3 % at 0.5); the
-// displacement form against the local continuum at lambda/L = 0.05. At lambda/L = 0.5 the
+// Longitudinal modes of a 1D rod (Deptulski 2021 Ch. 3, Tables 2-3), with the total energy
+// (kinetic + elastic) within 1 % over the run: the stress form (the default) against the thesis'
+// own TLSPH beta^2, which carries the same non-local softening (within 0.5 % at lambda/L = 0.05,
+// 3 % at 0.5); the displacement form against the local continuum (k pi)^2, ((2k - 1) pi / 2)^2 at
+// lambda/L = 0.05. At lambda/L = 0.5 the
 // clamped-free modes 2 and 3 are left out: the initial sine is no eigenmode of the wide-support
 // rod there, and the period read moves by several % with the run length (VALIDATION.md).
 std::vector<ValidationRecord> vibrating_rod(const ValidationContext& ctx) {
