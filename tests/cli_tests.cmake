@@ -41,7 +41,7 @@ expect_rejected(negative_spacing "${t}" "discretisation.spacing" "> 0")
 string(REPLACE "[time]" "[solver]\ndt = 1.0e-3\n\n[time]" t "${base}")
 expect_rejected(impossible_dt "${t}" "solver.dt" "impossible")
 string(REPLACE "material = \"water\"" "material = \"empty\"" t "${base}")
-expect_rejected(no_particles "${t}" "geometry" "no fluid or elastic particles")
+expect_rejected(no_particles "${t}" "geometry" "no fluid, elastic or rigid particles")
 
 execute_process(COMMAND ${PORESPH} run ${WORK}/does_not_exist.toml RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 2 OR NOT err MATCHES "cannot open")

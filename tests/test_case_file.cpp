@@ -66,7 +66,7 @@ TEST(CaseFile, ImpossibleTimeStep) {
 
 TEST(CaseFile, GeometryWithNoParticles) {
   expect_error(replaced(base_case(), "material = \"water\"", "material = \"empty\""),
-               {"geometry", "no fluid or elastic particles"});
+               {"geometry", "no fluid, elastic or rigid particles"});
   expect_error(replaced(base_case(), "material = \"water\"", "material = \"oil\""),
                {"geometry[1].material", "\"oil\""});
 }

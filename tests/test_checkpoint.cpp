@@ -56,8 +56,9 @@ std::string error_of(F&& f) {
 }  // namespace
 
 TEST(Checkpoint, RestoredRunContinuesBitwise) {
-  // 2D Poiseuille (walls, summation density) and the 3D dam break (continuity, free surface).
-  for (const char* name : {"poiseuille_2d", "dam_break_3d"}) {
+  // 2D Poiseuille (walls, summation density), the 3D dam break (continuity, free surface) and a
+  // rigid cylinder in a fluid (the body's motion is in the checkpoint).
+  for (const char* name : {"poiseuille_2d", "dam_break_3d", "settling_cylinder_2d"}) {
     Case c = embedded(name);
     auto a = make_cpu_engine(c.scene);
     for (int s = 0; s < 20; ++s) a->step(1e9);

@@ -120,7 +120,7 @@ TEST(Elastic, CaseKeys) {
   expect_refused(water, "[time]", "[solid]\ndamping_rate = 1.0\n\n[time]",
                  "solid.damping_rate: expected a material with kind = \"elastic\"");
   expect_refused(rod, "lower = [0.0]\nupper = [0.1333]\nmaterial = \"steel\"", "lower = [0.0]\nupper = [0.1333]\nmaterial = \"clamp\"",
-          "no fluid or elastic particles");
+          "no fluid, elastic or rigid particles");
 }
 
 // A rod at rest stays at rest; a rod set vibrating passes its kinetic energy to the elastic one and

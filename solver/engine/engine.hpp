@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "rigid/rigid_bodies.hpp"
 #include "scene/scene.hpp"
 #include "state/checkpoint.hpp"
 
@@ -45,6 +46,8 @@ class Engine {
   virtual Checkpoint checkpoint() = 0;
   // Continues from a checkpoint of the same scene; throws std::invalid_argument naming what differs.
   virtual void restore(const Checkpoint& c) = 0;
+  // The rigid bodies' motion (rigid/rigid_bodies.hpp), in the case's order of their geometries.
+  virtual std::vector<RigidBodyState> rigid_bodies() const { return {}; }
   // Runs to t_end (exactly).
   void run_until(double t_end) {
     while (time() < t_end) step(t_end);

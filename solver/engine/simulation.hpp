@@ -23,6 +23,8 @@
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/fluid_proximity.hpp"
 #include "neighbours/neighbour_list.hpp"
+#include "rigid/rigid_body.hpp"
+#include "rigid/rigid_motion.hpp"
 #include "scene/scene.hpp"
 #include "solid/clamp_partners.hpp"
 #include "solid/damping.hpp"
@@ -81,12 +83,14 @@ class Simulation final : public Engine {
       s_.enable_solid();
       B::copy(s_.x0.data(), s_.x.data(), sizeof(Vec<D>) * n_);
       s_.mirror.upload(clamp_mirror_partners(sc));
-      if (has_fluid_) s_.enable_coupling();
     }
+    rigid_.setup(sc, s_);
+    has_rigid_ = rigid_.active();
+    if (has_fluid_ && has_solids()) s_.enable_coupling();
     bucket_start_.resize(2 * grid_.total), bucket_end_.resize(2 * grid_.total), cell_near_.resize(grid_.total);
     if (!has_fluid_) {
       build_neighbours();
-      solid_strain();
+      if (has_elastic_) solid_strain();
       forces();
       return;
     }
@@ -112,6 +116,7 @@ class Simulation final : public Engine {
   double last_dt() const override { return dt_; }
   std::string backend() const override { return B::name; }
   std::string device() const override { return B::device_name(); }
+  std::vector<RigidBodyState> rigid_bodies() const override { return rigid_.bodies().all(); }
 
   std::vector<double> field(const std::string& name) override {
     std::vector<double> out;
@@ -146,6 +151,7 @@ class Simulation final : public Engine {
     c.dimension = D, c.particles = n_, c.precision = precision_name();
     c.time = t_, c.last_dt = dt_, c.first_dt = dt_first_, c.steps = steps_;
     c.dissipated_energy = dissipated_;
+    c.rigid_bodies = rigid_.pack();
     for (const auto& f : s_.fields().all()) {
       c.fields.push_back(CheckpointField{f.info.name, f.element_bytes, {}});
       f.to_host_bytes(c.fields.back().bytes);
@@ -177,6 +183,10 @@ class Simulation final : public Engine {
     strain_step_ = -1;
     ramp_body_forces(t_);
     build_neighbours();
+    if (has_rigid_) {
+      rigid_.unpack(c.rigid_bodies);
+      rigid_.sum_loads(s_.view());  // the accelerations are the checkpoint's
+    }
   }
 
   StepStats stats() override {
@@ -206,28 +216,30 @@ class Simulation final : public Engine {
     double dt = choose_dt();
     if (t_ + dt > t_stop) dt = t_stop - t_;
     if (t_ + dt >= t_stop * (1 - 1e-12)) dt = t_stop - t_;  // land exactly on output times
-    const ParticleView<D> v = s_.view();
     ramp_body_forces(t_ + dt);  // the forces evaluated in this step are those at its end
     open_boundary_velocity(dt);
+    // Rigid bodies move with the particles (rigid/rigid_motion.hpp): the same kicks, then their
+    // particles are placed after the drift.
     if (opt_.implicit_viscosity) {
       // Explicit kick with the non-viscous forces, backward-Euler viscous step, drift.
-      B::for_each(n_, KickPass<D>{v, mats_, Real(dt)});
+      kick(dt);
       viscous_step(dt);
       continuity_pass();
-      B::for_each(n_, DriftPass<D>{v, grid_, Real(dt), continuity()});
+      drift(dt);
       evaluate();
     } else if (opt_.integrator == Integrator::VelocityVerlet) {
       // Kick-drift-kick (eq. 49): a(t) is known from the previous force evaluation.
-      B::for_each(n_, KickPass<D>{v, mats_, Real(0.5 * dt)});
+      kick(0.5 * dt);
       continuity_pass();
-      B::for_each(n_, DriftPass<D>{v, grid_, Real(dt), continuity()});
+      drift(dt);
       evaluate();
-      B::for_each(n_, KickPass<D>{s_.view(), mats_, Real(0.5 * dt)});
+      kick(0.5 * dt);
+      if (has_rigid_) rigid_.place(s_.view(), grid_);  // the bodies' particles take the kick's velocity
     } else {
       // Leapfrog (eq. 48): v(t+dt/2) = v(t-dt/2) + dt a(t), x(t+dt) = x(t) + dt v_hat(t+dt/2).
-      B::for_each(n_, KickPass<D>{v, mats_, Real(dt)});
+      kick(dt);
       continuity_pass();
-      B::for_each(n_, DriftPass<D>{v, grid_, Real(dt), continuity()});
+      drift(dt);
       evaluate();
     }
     if (opt_.solid_damping_rate > 0)  // the power at the end of the step, times dt
@@ -239,6 +251,18 @@ class Simulation final : public Engine {
   }
 
  private:
+  bool has_solids() const { return has_elastic_ || has_rigid_; }
+  void kick(double h) {
+    B::for_each(n_, KickPass<D>{s_.view(), mats_, Real(h)});
+    if (has_rigid_) rigid_.kick(h);
+  }
+  void drift(double dt) {
+    B::for_each(n_, DriftPass<D>{s_.view(), grid_, Real(dt), continuity()});
+    if (!has_rigid_) return;
+    rigid_.drift(dt);
+    rigid_.place(s_.view(), grid_);
+  }
+
   // Summation density of a disordered start can be 20 % off for a few steps and recover, so the
   // density check is opt-in (solver.max_density_deviation).
   double density_limit() const { return opt_.max_density_deviation > 0 ? opt_.max_density_deviation : 1e30; }
@@ -305,7 +329,8 @@ class Simulation final : public Engine {
     B::for_each(n_, CellKeyPass<D>{grid_, s_.x.data(), s_.material.data(), mats_, keys_.data()});
     B::sort_by_cell(keys_.data(), n_, 2 * grid_.total, perm_.data(), bucket_start_.data(), bucket_end_.data());
     s_.permute(perm_.data());
-    if (has_elastic_ && has_walls_) B::for_each(n_, IndexOfIdPass<D>{s_.view()});  // for the clamps' mirror
+    if ((has_elastic_ && has_walls_) || has_rigid_)  // the clamps' mirror, the bodies' particles
+      B::for_each(n_, IndexOfIdPass<D>{s_.view()});
     if (every_particle) {
       s_.near_fluid.upload(std::vector<std::uint8_t>(n_, 1));
     } else if (has_walls_ && has_fluid_) {  // without fluids every wall lists all its neighbours
@@ -329,7 +354,7 @@ class Simulation final : public Engine {
     const bool number = opt_.density == DensityMethod::NumberSummation;
     if (normalised) B::for_each(n_, NumberDensityPass<D>{view_nb(), kern_, s_.view(), all_particles});
     B::for_each(n_, DensitySummationPass<D>{view_nb(), kern_, s_.view(), mats_, normalised, number, all_particles,
-                                            has_elastic_});
+                                            has_solids()});
   }
 
   // d rho/dt with the velocity that drifts the particles (fluid/continuity.hpp).
@@ -340,16 +365,18 @@ class Simulation final : public Engine {
   }
 
   // Every force of a step (after the solids' strain): the fluid's forces (with the pressure and
-  // velocity that walls and solids present to it), the solids' own forces, then the fluid's
-  // reaction on them.
+  // velocity that walls and solids present to it), the solids' own forces and contacts, then the
+  // fluid's reaction on them; last, the rigid bodies' loads.
   void forces() {
-    if (has_fluid_ && has_elastic_)
+    if (has_fluid_ && has_solids())
       B::for_each(n_, SolidInterfacePressurePass<D>{view_nb(), kern_, s_.view(), mats_, opt_.solid_coupling});
     if (has_fluid_) force_pass();
     if (has_elastic_) solid_force();
-    if (has_fluid_ && has_elastic_)
+    if (has_rigid_) B::for_each(n_, RigidContactPass<D>{view_nb(), s_.view(), mats_, Real(opt_.spacing)});
+    if (has_fluid_ && has_solids())
       B::for_each(n_, FluidOnSolidPass<D>{view_nb(), kern_, s_.view(), mats_, fluid_force_options(),
                                           opt_.solid_coupling != SolidCoupling::Traction});
+    if (has_rigid_) rigid_.sum_loads(s_.view());
   }
 
   FluidForceOptions fluid_force_options() const {
@@ -369,7 +396,7 @@ class Simulation final : public Engine {
     // Walls and solids present a pressure and a no-slip velocity (boundary/, solid/fluid_coupling.hpp).
     if (has_walls_ && opt_.wall_pressure == WallPressure::Extrapolated)
       B::for_each(n_, WallPressurePass<D>{view_nb(), kern_, s_.view(), mats_});
-    if (has_walls_ || has_elastic_)
+    if (has_walls_ || has_solids())
       B::for_each(n_, WallVelocityPass<D>{view_nb(), kern_, s_.view(), mats_, opt_.wall_noslip});
     const FluidForceOptions fo = fluid_force_options();
     if (opt_.surface_tension > 0) {
@@ -547,7 +574,8 @@ class Simulation final : public Engine {
   double dissipated_ = 0;  // J, by the solids' damping
   long steps_ = 0;
   long strain_step_ = -1;  // the step whose strain and stress the fields hold
-  bool has_walls_ = false, has_fluid_ = false, has_elastic_ = false;
+  bool has_walls_ = false, has_fluid_ = false, has_elastic_ = false, has_rigid_ = false;
+  RigidMotion<D, B> rigid_;
   std::string dt_limit_ = "none";
 };
 

@@ -25,7 +25,7 @@ struct ContinuityPass {
     const bool fluid_i = mats.is_fluid(mi);
     const Vec<D> v_i = s.v[i];
     const Real rho_i = s.rho[i];
-    if (!fluid_i && (!walls || !s.near_fluid[i] || mats.is_elastic(mi))) {
+    if (!fluid_i && (!walls || !s.near_fluid[i] || mats.is_solid(mi))) {
       s.drho[i] = Real(0);
       return;
     }

@@ -40,10 +40,10 @@ struct DensitySummationPass {
   bool normalised;
   bool number;         // eq. 40 form
   bool all_particles;  // false: walls far from any fluid keep their density and pressure
-  bool solids;         // the case has elastic solids
+  bool solids;         // the case has elastic or rigid solids
   PSPH_HD void operator()(int i) const {
     if (!all_particles && !s.near_fluid[i]) return;
-    if (solids && mats.is_elastic(s.material[i])) return;  // a solid's volume is its reference one
+    if (solids && mats.is_solid(s.material[i])) return;  // a solid keeps its own density
     const Real w0 = kern.W(Real(0));
     const Real m_i = s.m[i];
     Real num = m_i * w0;
@@ -52,11 +52,11 @@ struct DensitySummationPass {
     nb.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
       const Real w = kern.W(r);
       const Real ratio = open ? buffer_density_ratio(mats, s.material[j], s.x[j], s.rho0[j]) : Real(1);
-      // An elastic neighbour fills its volume with i's rest density (no deficit at the interface,
+      // A solid neighbour fills its volume with i's rest density (no deficit at the interface,
       // whatever the solid's own density).
-      const Real m_j = number                                    ? m_i
-                       : solids && mats.is_elastic(s.material[j]) ? s.rho0[i] * mats.volume_of(s, j)
-                                                                  : s.m[j];
+      const Real m_j = number                                  ? m_i
+                       : solids && mats.is_solid(s.material[j]) ? s.rho0[i] * mats.volume_of(s, j)
+                                                                : s.m[j];
       num += m_j * w * ratio;
       if (normalised) den += w / s.number_density[j];
     });
@@ -72,7 +72,7 @@ struct EquationOfStatePass {
   ParticleView<D> s;
   MaterialTable<D> mats;
   PSPH_HD void operator()(int i) const {
-    if (mats.is_elastic(s.material[i])) return;  // solid/fluid_coupling.hpp
+    if (mats.is_solid(s.material[i])) return;  // solid/fluid_coupling.hpp
     s.p[i] = pressure_from_density(mats[s.material[i]], s.rho[i], s.rho0[i]);
   }
 };

@@ -7,7 +7,7 @@
 
 namespace psph {
 
-enum class MaterialKind : int { Fluid = 0, Wall = 1, Elastic = 2 };
+enum class MaterialKind : int { Fluid = 0, Wall = 1, Elastic = 2, Rigid = 3 };
 enum class EquationOfState : int { Linear = 0, Tait = 1 };
 
 struct Material {
@@ -50,6 +50,10 @@ struct MaterialTable {
   PSPH_HD const Material& operator[](int k) const { return m[k]; }
   PSPH_HD bool is_fluid(int k) const { return m[k].kind == MaterialKind::Fluid; }
   PSPH_HD bool is_elastic(int k) const { return m[k].kind == MaterialKind::Elastic; }
+  PSPH_HD bool is_rigid(int k) const { return m[k].kind == MaterialKind::Rigid; }
+  // Elastic and rigid solids: bodies with their own density, which present their volume and an
+  // extrapolated pressure to the fluid (solid/fluid_coupling.hpp) and keep their density.
+  PSPH_HD bool is_solid(int k) const { return is_elastic(k) || is_rigid(k); }
   // The volume neighbour j presents to the fluid's sums: m / rho, and for an elastic particle (whose
   // rho stays the reference one, solid/) its current volume V0 (1 + tr eps) in small strain: with
   // the reference volume a solid compressed by 1e-3 looked 1e-3 denser to the fluid's density sum,
@@ -61,6 +65,8 @@ struct MaterialTable {
   }
   // Particles that the forces move (the others are walls, moved only by their prescribed velocity).
   PSPH_HD bool is_dynamic(int k) const { return m[k].kind != MaterialKind::Wall; }
+  // Particles kicked by their own acceleration: a rigid particle moves with its body (rigid/).
+  PSPH_HD bool is_kicked(int k) const { return is_dynamic(k) && !is_rigid(k); }
   // A fluid particle that the forces move: not in an open boundary's buffer (whose state is imposed).
   PSPH_HD bool moves_freely(int k, const Vec<D>& x) const { return is_fluid(k) && open.zone(x) == BufferZone::None; }
   // Body force (m/s^2) on a particle of material k at x: the material's plus its regions'.

@@ -55,8 +55,8 @@ PSPH_HD PSPH_PAIR inline FluidPairTerms<D> fluid_pair_terms(const FluidParticle<
   // masses differ by the density ratio, and eq. 54b would weigh a gas particle's own pressure by
   // its liquid neighbour's mass; the volume form of Hu & Adams (2006, J. Comput. Phys. 213:844),
   // (p_i V_i^2 + p_j V_j^2) / m_i, is the same for equal masses and stays consistent. An elastic
-  // neighbour (its own density and mass) also takes the volume form.
-  const Real pterm = opt.number_density || mats.is_elastic(mj) ? (fi.p_V2 + s.p[j] * V_j * V_j) * fi.inv_m
+  // or rigid neighbour (its own density and mass) also takes the volume form.
+  const Real pterm = opt.number_density || mats.is_solid(mj) ? (fi.p_V2 + s.p[j] * V_j * V_j) * fi.inv_m
                                                                 : m_j * (fi.p_rho2 + s.p[j] * inv_rho_j * inv_rho_j);
   // Artificial viscosity for approaching pairs (Monaghan 1992; Deptulski eq. 2.64 with the sign
   // that makes it repulsive).
@@ -86,7 +86,7 @@ struct FluidForcePass {
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
     if (!mats.moves_freely(mi, s.x[i])) {  // walls, open-boundary buffers and solids
-      if (!mats.is_elastic(mi)) s.a[i] = Vec<D>::zero();  // a solid's comes from solid/
+      if (!mats.is_elastic(mi)) s.a[i] = Vec<D>::zero();  // an elastic solid's comes from solid/
       s.v_xsph[i] = Vec<D>::zero();
       s.lap_v[i] = Vec<D>::zero();  // none for walls and buffers (a recycled one kept the outlet's)
       return;

@@ -1,7 +1,8 @@
 #pragma once
 // Kick and drift updates shared by the leapfrog (Pazdniakou eq. 48) and velocity-Verlet
 // (eq. 49, kick-drift-kick form) integrators. Fluids and elastic solids are kicked; walls are
-// not: they drift with their prescribed velocity (fixed walls have v = 0).
+// not: they drift with their prescribed velocity (fixed walls have v = 0); rigid particles are
+// placed by their body's motion after the drift (rigid/rigid_motion.hpp).
 #include <cmath>
 
 #include "fluid/material.hpp"
@@ -16,7 +17,7 @@ struct KickPass {
   MaterialTable<D> mats;
   Real dt;
   PSPH_HD void operator()(int i) const {
-    if (mats.is_dynamic(s.material[i])) s.v[i] += s.a[i] * dt;
+    if (mats.is_kicked(s.material[i])) s.v[i] += s.a[i] * dt;
   }
 };
 

@@ -16,7 +16,7 @@ void write_checkpoint_file(const std::string& path, const Checkpoint& c, const s
   nlohmann::json head = {{"case", case_name},   {"dimension", c.dimension}, {"particles", c.particles},
                          {"precision", c.precision}, {"time", c.time},      {"last_dt", c.last_dt},
                          {"first_dt", c.first_dt},   {"steps", c.steps},     {"dissipated_energy", c.dissipated_energy},
-                         {"fields", nlohmann::json::array()}};
+                         {"rigid_bodies", c.rigid_bodies}, {"fields", nlohmann::json::array()}};
   for (const auto& f : c.fields)
     head["fields"].push_back({{"name", f.name}, {"element_bytes", f.element_bytes}, {"bytes", f.bytes.size()}});
   const std::string tmp = path + ".partial";
@@ -56,6 +56,7 @@ Checkpoint read_checkpoint_file(const std::string& path) {
     c.first_dt = head.at("first_dt").get<double>();
     c.steps = head.at("steps").get<long>();
     c.dissipated_energy = head.value("dissipated_energy", 0.0);
+    c.rigid_bodies = head.value("rigid_bodies", std::vector<double>{});
     for (const auto& f : head.at("fields")) {
       CheckpointField cf;
       cf.name = f.at("name").get<std::string>();

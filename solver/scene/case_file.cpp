@@ -77,7 +77,8 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
   // Materials, in file order of their names (toml tables are ordered by key).
   std::map<std::string, int> mat_index;
   std::vector<std::string> walls_without_angle;
-  bool has_liquid = false, has_gas = false, has_elastic = false, coupled = false;
+  bool has_liquid = false, has_gas = false, has_elastic = false, has_rigid = false, coupled = false;
+  bool solids_in_fluid = false;
   // Elastic solids: the stress form by default (solid/stress_form.hpp: any Poisson ratio, free
   // rotations at free surfaces, a per-particle stress law), or the displacement form
   // (solid/elastic_force.hpp, Pazdniakou eq. 17).
@@ -94,8 +95,11 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       CaseReader r(*v.as_table(), file, "materials." + name);
       SceneMaterial m;
       m.name = name;
-      const std::string kind = r.choice("kind", {"fluid", "wall", "elastic"});
-      m.props.kind = kind == "fluid" ? MaterialKind::Fluid : kind == "elastic" ? MaterialKind::Elastic : MaterialKind::Wall;
+      const std::string kind = r.choice("kind", {"fluid", "wall", "elastic", "rigid"});
+      m.props.kind = kind == "fluid"     ? MaterialKind::Fluid
+                     : kind == "elastic" ? MaterialKind::Elastic
+                     : kind == "rigid"   ? MaterialKind::Rigid
+                                         : MaterialKind::Wall;
       // A wall's density is optional: by default it is the densest fluid's (set below).
       m.props.rest_density = (kind != "wall" || r.has("density")) ? Real(r.positive("density")) : Real(0);
       if (kind == "elastic") {
@@ -114,6 +118,14 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
         m.props.sound_speed =
             Real(std::sqrt((m.props.bulk_modulus + 4 * m.props.shear_modulus / 3) / m.props.rest_density));
         has_elastic = true;
+      }
+      if (kind == "rigid") {
+        // Each [[geometry]] of this material is one body (rigid/). Its sound speed sets the
+        // contact stiffness (rigid/rigid_body.hpp); by default Pazdniakou's eq. 74 with 8x the
+        // elastic bulk modulus, set below.
+        m.props.sound_speed = r.has("sound_speed") ? Real(r.positive("sound_speed")) : Real(0);
+        m.body_force = r.vec<double>("body_force", D, std::array<double, 3>{0, 0, 0});
+        has_rigid = true;
       }
       if (kind == "fluid") {
         m.props.viscosity = Real(r.non_negative("viscosity"));
@@ -149,6 +161,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
         solid.fail(key, "expected a material with kind = \"elastic\" for it to apply to");
     const bool has_fluid = has_liquid || has_gas;
     coupled = has_fluid && has_elastic;
+    solids_in_fluid = has_fluid && (has_elastic || has_rigid);
     // Mass-proportional damping a -= zeta v for quasi-static loading (Pazdniakou §3.1.4's Verlet
     // parameter theta is zeta dt).
     o.solid_damping_rate = solid.non_negative("damping_rate", 0.0);
@@ -162,11 +175,26 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       solid.fail("coupling", "expected \"pair\" or \"pair_eos\" with formulation = \"displacement\" (the traction "
                              "uses the stress form's boundary sums)");
     solid.finish();
-    const MaterialKind bulk = has_fluid ? MaterialKind::Fluid : MaterialKind::Elastic;
+    const MaterialKind bulk = has_fluid ? MaterialKind::Fluid : has_elastic ? MaterialKind::Elastic : MaterialKind::Rigid;
     const SceneMaterial* densest = nullptr;
     for (const auto& m : sc.materials)
       if (m.props.kind == bulk && (!densest || m.props.rest_density > densest->props.rest_density)) densest = &m;
-    if (!densest) top.fail("materials", "expected at least one material with kind = \"fluid\" or \"elastic\"");
+    if (!densest) top.fail("materials", "expected at least one material with kind = \"fluid\", \"elastic\" or \"rigid\"");
+    // A rigid material's default sound speed: c = sqrt(8 K_elastic / rho) (Pazdniakou §3.3, eq. 74),
+    // or without elastic solids the fluids' largest.
+    Real k_elastic = 0, c_fluid = 0;
+    for (const auto& m : sc.materials) {
+      if (m.props.kind == MaterialKind::Elastic) k_elastic = std::max(k_elastic, m.props.bulk_modulus);
+      if (m.props.kind == MaterialKind::Fluid) c_fluid = std::max(c_fluid, m.props.sound_speed);
+    }
+    for (auto& m : sc.materials)
+      if (m.props.kind == MaterialKind::Rigid && m.props.sound_speed == Real(0)) {
+        if (k_elastic == Real(0) && c_fluid == Real(0))
+          top.fail("materials." + m.name + ".sound_speed",
+                   "expected the sound speed (m/s) that sets a rigid material's contact stiffness in a case "
+                   "without fluids or elastic solids");
+        m.props.sound_speed = k_elastic > Real(0) ? std::sqrt(8 * k_elastic / m.props.rest_density) : c_fluid;
+      }
     Real c_max = 0;
     for (const auto& m : sc.materials)
       if (m.props.kind == bulk) c_max = std::max(c_max, m.props.sound_speed);
@@ -289,11 +317,11 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       r.fail("laplacian_correction", "expected \"trace\" or \"none\" with implicit_viscosity = true (the tensor form is explicit only)");
     // The solid takes the reaction of each fluid pair force (solid/fluid_coupling.hpp), which needs
     // the explicit viscous sum and a per-particle (scalar) Laplacian correction.
-    if (coupled && o.implicit_viscosity)
-      r.fail("implicit_viscosity", "expected false in a case with elastic solids and fluids (the solid takes the "
-                                   "reaction of the explicit viscous force)");
-    if (coupled && o.laplacian_correction == LaplacianCorrection::Tensor)
-      r.fail("laplacian_correction", "expected \"trace\" or \"none\" in a case with elastic solids and fluids");
+    if (solids_in_fluid && o.implicit_viscosity)
+      r.fail("implicit_viscosity", "expected false in a case with elastic or rigid solids and fluids (the solid "
+                                   "takes the reaction of the explicit viscous force)");
+    if (solids_in_fluid && o.laplacian_correction == LaplacianCorrection::Tensor)
+      r.fail("laplacian_correction", "expected \"trace\" or \"none\" in a case with elastic or rigid solids and fluids");
     const double p_b = r.non_negative("background_pressure", 0.0);
     for (auto& m : sc.materials) m.props.background_pressure = Real(p_b);
     if (o.neighbour_skin > 1) r.fail("neighbour_skin", "expected a fraction of the support radius in [0, 1]");
@@ -393,6 +421,15 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       else if (mat_index.count(mname)) s.material = mat_index[mname];
       else r.fail("material", "expected \"empty\" or the name of a table under [materials], got \"" + mname + "\"");
       s.velocity = r.vec<double>("velocity", D, std::array<double, 3>{0, 0, 0});
+      // A rigid body's initial angular velocity (rad/s) about its centre of mass: a number in 2D
+      // (about z), a vector in 3D.
+      if (r.has("angular_velocity")) {
+        if (s.material < 0 || sc.materials[s.material].props.kind != MaterialKind::Rigid)
+          r.fail("angular_velocity", "expected a geometry of a material with kind = \"rigid\" for it to apply to");
+        if (D == 1) r.fail("angular_velocity", "expected no rotation in 1D");
+        if (D == 2) s.angular_velocity[2] = r.number("angular_velocity");
+        else s.angular_velocity = r.vec<double>("angular_velocity", 3);
+      }
       r.finish();
       c.geometry.push_back(s);
     }

@@ -29,6 +29,7 @@ struct GeometryShape {
   std::vector<Grain> grains;  // generated from pack when the case is read
   int material = -1;  // -1: "empty" (removes particles)
   std::array<double, 3> velocity{0, 0, 0};
+  std::array<double, 3> angular_velocity{0, 0, 0};  // rigid bodies (rad/s, world frame; z in 2D)
 };
 
 struct OutputOptions {

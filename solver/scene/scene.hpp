@@ -88,6 +88,10 @@ struct Scene {
   // Particles, components interleaved (dimension per particle).
   std::vector<double> x, v, mass;
   std::vector<int> material;
+  // Rigid bodies (rigid/): each particle's body (-1 if none) and each body's initial angular
+  // velocity (rad/s, world frame; z in 2D). Particle velocities already include the rotation.
+  std::vector<int> body;
+  std::vector<std::array<double, 3>> body_angular_velocity;
 
   int count() const { return static_cast<int>(material.size()); }
 };

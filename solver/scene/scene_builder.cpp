@@ -3,6 +3,8 @@
 #include <cmath>
 #include <random>
 
+#include "rigid/rigid_scene.hpp"
+
 namespace psph {
 namespace {
 
@@ -89,8 +91,19 @@ void build_particles(Case& c) {
     throw CaseError(c.file + ": discretisation.spacing: the domain holds " + std::to_string(total) +
                     " lattice sites; expected at most 4e8");
   const double n_sum = lattice_kernel_sum(D, sc.options.kernel, sc.options.support_radius, dx);
-  sc.x.clear(), sc.v.clear(), sc.mass.clear(), sc.material.clear();
-  long moving = 0;  // fluid and elastic particles: what the forces move
+  sc.x.clear(), sc.v.clear(), sc.mass.clear(), sc.material.clear(), sc.body.clear();
+  sc.body_angular_velocity.clear();
+  // Each geometry of a rigid material is one body.
+  std::vector<int> body_of_geometry(c.geometry.size(), -1);
+  for (std::size_t g = 0; g < c.geometry.size(); ++g) {
+    const int m = c.geometry[g].material;
+    if (m >= 0 && sc.materials[m].props.kind == MaterialKind::Rigid) {
+      body_of_geometry[g] = static_cast<int>(sc.body_angular_velocity.size());
+      sc.body_angular_velocity.push_back(c.geometry[g].angular_velocity);
+    }
+  }
+  std::vector<long> body_count(sc.body_angular_velocity.size(), 0);
+  long moving = 0;  // fluid, elastic and rigid particles: what the forces move
   int idx[3] = {0, 0, 0};
   std::mt19937_64 rng(12345);  // fixed seed: the same disorder on every run
   std::uniform_real_distribution<double> jitter(-sc.options.jitter * dx, sc.options.jitter * dx);
@@ -98,8 +111,9 @@ void build_particles(Case& c) {
     double x[3];
     for (int k = 0; k < D; ++k) x[k] = sc.lower[k] + (idx[k] + 0.5) * dx;
     const GeometryShape* owner = nullptr;
-    for (const auto& g : c.geometry)
-      if (contains(g, x, D)) owner = &g;
+    int owner_index = -1;
+    for (std::size_t g = 0; g < c.geometry.size(); ++g)
+      if (contains(c.geometry[g], x, D)) owner = &c.geometry[g], owner_index = static_cast<int>(g);
     if (owner && owner->material >= 0) {
       const SceneMaterial& m = sc.materials[owner->material];
       const bool is_fluid = m.props.kind == MaterialKind::Fluid;
@@ -110,13 +124,21 @@ void build_particles(Case& c) {
       }
       sc.mass.push_back(m.props.rest_density / n_sum);
       sc.material.push_back(owner->material);
+      const int b = body_of_geometry[owner_index];
+      sc.body.push_back(b);
+      if (b >= 0) ++body_count[b];
       if (m.props.kind != MaterialKind::Wall) ++moving;
     }
     int d = 0;
     while (d < D && ++idx[d] >= n[d]) idx[d++] = 0;
   }
+  for (std::size_t g = 0; g < c.geometry.size(); ++g)
+    if (body_of_geometry[g] >= 0 && body_count[body_of_geometry[g]] == 0)
+      throw CaseError(c.file + ": geometry[" + std::to_string(g) +
+                      "]: this rigid body holds no particle (later geometries cover it, or it is smaller than a spacing)");
+  add_rigid_rotation(sc);
   if (moving == 0)
-    throw CaseError(c.file + ": geometry: the geometry yields no fluid or elastic particles (" +
+    throw CaseError(c.file + ": geometry: the geometry yields no fluid, elastic or rigid particles (" +
                     std::to_string(sc.material.size()) + " particles in all); check the shapes and the domain");
 }
 

@@ -14,13 +14,6 @@
 
 namespace psph {
 
-// index_of_id[id[i]] = i, after every reordering (ids are unique: no write conflicts).
-template <int D>
-struct IndexOfIdPass {
-  ParticleView<D> s;
-  PSPH_HD void operator()(int i) const { s.index_of_id[s.id[i]] = i; }
-};
-
 template <int D>
 struct ClampDisplacementPass {
   ParticleView<D> s;

@@ -17,6 +17,7 @@
 //             with the extrapolated pressure;
 //   pair_eos: the same with the solid's own pressure c_solid^2 (rho - rho0) = -k tr(eps)
 //             (Pazdniakou eq. 74 with the density change of the strain).
+// Rigid bodies (rigid/) present the extrapolated pressure and take the reaction of every pair force.
 // The extrapolated pressure is Adami, Hu & Adams (2012) eq. 27 without the particle's own
 // acceleration: with it, the traction feeds the last step's acceleration back into the next one
 // (an added-mass loop: the elastic cube of VALIDATION.md blew up in 54 steps).
@@ -37,10 +38,11 @@ struct SolidInterfacePressurePass {
   SolidCoupling mode;
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
-    if (!mats.is_elastic(mi)) return;
+    if (!mats.is_solid(mi)) return;
     Real p = 0;  // without fluid neighbours no fluid sees it
     s.fluid_contact[i] = extrapolate_fluid_pressure(nb, kern, s, mats, i, Vec<D>::zero(), p);
-    s.p[i] = mode == SolidCoupling::PairEos ? small_strain_pressure(s.strain[i], mats[mi].bulk_modulus) : p;
+    const bool eos = mode == SolidCoupling::PairEos && mats.is_elastic(mi);
+    s.p[i] = eos ? small_strain_pressure(s.strain[i], mats[mi].bulk_modulus) : p;
   }
 };
 
@@ -65,10 +67,10 @@ struct AmbientPressurePass {
   }
 };
 
-// a_i += -(m_f / m_i) a_f(i) over the fluid neighbours f of elastic particle i, a_f(i) the
+// a_i += -(m_f / m_i) a_f(i) over the fluid neighbours f of solid particle i, a_f(i) the
 // acceleration fluid particle f took from i in FluidForcePass (the same function, with f's
-// Laplacian correction): its pressure part only with `pressure` (pair coupling). Runs after the
-// solid's own force pass, which sets a_i.
+// Laplacian correction): its pressure part only with `pressure` (pair coupling) or on a rigid
+// body (which has no traction). Runs after the solid's own force pass, which sets a_i.
 template <int D>
 struct FluidOnSolidPass {
   NeighbourList<D> nb;
@@ -78,7 +80,9 @@ struct FluidOnSolidPass {
   FluidForceOptions opt;
   bool pressure;
   PSPH_HD void operator()(int i) const {
-    if (!mats.is_elastic(s.material[i])) return;
+    const int mi = s.material[i];
+    if (!mats.is_solid(mi)) return;
+    const bool with_pressure = pressure || mats.is_rigid(mi);
     const Real V_i = mats.volume_of(s, i);
     Vec<D> f = Vec<D>::zero();
     nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
@@ -86,7 +90,7 @@ struct FluidOnSolidPass {
       const FluidParticle<D> fj(s, mats, j);
       const FluidPairTerms<D> t = fluid_pair_terms(fj, s, mats, opt, i, rij * Real(-1), r, kern.F(r), V_i);
       const Vec<D> a_j = t.artificial + t.viscous * (opt.viscosity ? s.visc_scale[j] : Real(0));
-      f -= (pressure ? a_j + t.pressure : a_j) * s.m[j];
+      f -= (with_pressure ? a_j + t.pressure : a_j) * s.m[j];
     });
     s.a[i] += f * (Real(1) / s.m[i]);
   }

@@ -12,7 +12,8 @@
 
 namespace psph {
 
-// The solid's neighbours of particle i: elastic and wall particles, not fluids.
+// The solid's neighbours of particle i: elastic and wall particles, not fluids, nor rigid bodies
+// (an inclusion meets the solid by contact only, rigid/rigid_body.hpp, Pazdniakou §5.2.4).
 template <int D>
 struct SolidNeighbours {
   NeighbourList<D> nb;
@@ -21,7 +22,8 @@ struct SolidNeighbours {
   template <class F>
   PSPH_HD void for_each(int i, F&& f) const {
     nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
-      if (!mats.is_fluid(s.material[j])) f(j, rij, r);
+      const int mj = s.material[j];
+      if (!mats.is_fluid(mj) && !mats.is_rigid(mj)) f(j, rij, r);
     });
   }
 };

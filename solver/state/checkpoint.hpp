@@ -20,6 +20,7 @@ struct Checkpoint {
   double time = 0, last_dt = 0, first_dt = 0;
   long steps = 0;
   double dissipated_energy = 0;  // by the solids' damping, from the run's start (J)
+  std::vector<double> rigid_bodies;  // the rigid bodies' motion (rigid/rigid_bodies.hpp, pack())
   std::vector<CheckpointField> fields;
 };
 

@@ -11,6 +11,7 @@ Phase phase_of(const Material& m) {
     case MaterialKind::Wall: return Phase::Wall;
     case MaterialKind::Fluid: return m.colour < 0 ? Phase::Gas : Phase::Water;
     case MaterialKind::Elastic: return Phase::Solid;
+    case MaterialKind::Rigid: return Phase::Rigid;
   }
   return Phase::Wall;
 }

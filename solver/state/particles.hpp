@@ -42,11 +42,13 @@ struct ParticleView {
   Vec<D>* shepard_grad;
   Mat<D>* kcorr;
   std::int32_t* mirror;       // clamps: id of the mirror partner, -1 if none (solid/clamp_partners.hpp)
-  std::int32_t* index_of_id;  // current index of each id (solid/clamp.hpp)
+  std::int32_t* index_of_id;  // current index of each id (clamps, rigid bodies)
   // Fluids with elastic solids only (null otherwise): solid/fluid_coupling.hpp.
   Real* visc_scale;  // a fluid particle's Laplacian correction D / lambda of the last force pass
-  std::uint8_t* fluid_contact;  // an elastic particle with fluid within its support
+  std::uint8_t* fluid_contact;  // a solid particle with fluid within its support
   Real* p_ambient;              // the fluid's pressure carried into an elastic body's surface layer
+  // Rigid bodies only (null otherwise): rigid/.
+  std::int32_t* body;  // the rigid body a particle belongs to, -1 if none
 };
 
 template <class T, class B>
@@ -55,6 +57,13 @@ struct Gather {
   const T* in;
   const int* perm;
   PSPH_HD void operator()(int i) const { out[i] = in[perm[i]]; }
+};
+
+// index_of_id[id[i]] = i, after every reordering (ids are unique: no write conflicts).
+template <int D>
+struct IndexOfIdPass {
+  ParticleView<D> s;
+  PSPH_HD void operator()(int i) const { s.index_of_id[s.id[i]] = i; }
 };
 
 template <int D, class B>
@@ -82,7 +91,7 @@ class ParticleState {
                            colour.data(), colour_gradient.data(), curvature.data(), x0.data(), u.data(),
                            strain.data(), stress.data(), shepard.data(), shepard_grad.data(), kcorr.data(),
                            mirror.data(), index_of_id.data(), visc_scale.data(),
-                           fluid_contact.data(), p_ambient.data()};
+                           fluid_contact.data(), p_ambient.data(), body.data()};
   }
 
   // Allocates and registers the interface fields (a case with two fluids and surface tension).
@@ -101,7 +110,8 @@ class ParticleState {
     if (solid_) return;
     solid_ = true;
     x0.resize(n_), u.resize(n_), strain.resize(n_), stress.resize(n_);
-    shepard.resize(n_), shepard_grad.resize(n_), kcorr.resize(n_), mirror.resize(n_), index_of_id.resize(n_);
+    shepard.resize(n_), shepard_grad.resize(n_), kcorr.resize(n_), mirror.resize(n_);
+    index_of_id.resize(n_);
     u.zero(), strain.zero(), stress.zero();
     reg(x0, FieldType::Real, D, "reference_position", "m", "initial position (small-strain reference configuration)");
     reg(u, FieldType::Real, D, "displacement", "m", "displacement x - x0 of elastic solids");
@@ -116,6 +126,14 @@ class ParticleState {
   void enable_coupling() {
     visc_scale.resize(n_), fluid_contact.resize(n_), p_ambient.resize(n_);
     visc_scale.zero(), fluid_contact.zero(), p_ambient.zero();
+  }
+
+  // Registers the rigid body of each particle (a case with rigid bodies, rigid/); the index of each
+  // id finds a body's particles after a reordering.
+  void enable_rigid(const std::vector<std::int32_t>& body_of_particle) {
+    body.upload(body_of_particle);
+    index_of_id.resize(n_);
+    reg(body, FieldType::Int, 1, "rigid_body", "-", "the rigid body a particle belongs to, -1 if none");
   }
 
   // Reorders every registered field: field[i] <- field[perm[i]].
@@ -137,6 +155,7 @@ class ParticleState {
   DeviceArray<Mat<D>, B> kcorr;
   DeviceArray<std::int32_t, B> mirror;
   DeviceArray<std::int32_t, B> index_of_id;  // not registered: recomputed after every reordering
+  DeviceArray<std::int32_t, B> body;         // empty unless enable_rigid()
   DeviceArray<Real, B> visc_scale, p_ambient;  // empty unless enable_coupling()
   DeviceArray<std::uint8_t, B> fluid_contact;
 

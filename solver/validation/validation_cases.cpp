@@ -10,6 +10,7 @@
 #include "validation/channel_flow.hpp"
 #include "validation/elastic_cube.hpp"
 #include "validation/lame_cylinder.hpp"
+#include "validation/rigid_motion.hpp"
 #include "validation/laplace_bubble.hpp"
 #include "validation/operator_checks.hpp"
 #include "validation/oscillating_plate.hpp"
@@ -312,6 +313,37 @@ std::vector<ValidationRecord> lame_cylinder(const ValidationContext& ctx) {
                       r.hoop_rms, 0.03)};
 }
 
+// A torque-free symmetric top falling freely: every particle against the analytical motion
+// (Newton-Euler, Pazdniakou eqs. 62-69), angular momentum and rotational energy kept.
+std::vector<ValidationRecord> rigid_top(const ValidationContext& ctx) {
+  const TopTrajectory r = run_rigid_top(rigid_case("rigid_top_3d"), ctx.backend);
+  if (ctx.log)
+    *ctx.log << "  particles within " << r.position_error << " of the body's length of the analytical trajectory, centre "
+             << r.centre_error << " of the fall; |L| kept to " << r.momentum_drift << ", rotational energy to "
+             << r.energy_drift << "; " << r.precession_turns << " turns of precession; " << r.particles
+             << " particles, " << r.steps << " steps, " << r.seconds << " s\n";
+  return {make_record("rigid_top_3d", "max |x - x_exact| / body length (every particle, 10 samples)", r.position_error,
+                      0.0, r.position_error, 1e-4),
+          make_record("rigid_top_3d", "max |X - X_exact| / distance fallen", r.centre_error, 0.0, r.centre_error, 1e-9),
+          make_record("rigid_top_3d", "max | |L| / |L0| - 1 |", r.momentum_drift, 0.0, r.momentum_drift, 1e-9),
+          make_record("rigid_top_3d", "max |E_rot / E_rot0 - 1|", r.energy_drift, 0.0, r.energy_drift, 1e-5)};
+}
+
+// A cylinder settling through a periodic square array at Re << 1: the drag at its terminal
+// velocity against Sangani & Acrivos (1982) at the lattice's solid fraction.
+std::vector<ValidationRecord> settling_cylinder(const ValidationContext& ctx) {
+  const SettlingDrag r = run_settling_cylinder(rigid_case("settling_cylinder_2d"), ctx.backend);
+  if (ctx.log)
+    *ctx.log << "  solid fraction " << r.solid_fraction << ": F / (mu U) = " << r.drag << " against " << r.drag_reference
+             << " (" << 100 * (r.drag / r.drag_reference - 1) << " %), changed by " << r.drag_change
+             << " over the last tenth; Re = " << r.reynolds << ", omega = " << r.angular_velocity << " rad/s; "
+             << r.particles << " particles, " << r.steps << " steps, " << r.seconds << " s\n";
+  return {make_record("settling_cylinder_2d", "drag F / (mu U) at the terminal velocity / Sangani-Acrivos", r.drag / r.drag_reference,
+                      1.0, std::fabs(r.drag / r.drag_reference - 1), 0.02),
+          make_record("settling_cylinder_2d", "relative change of the drag over the run's last tenth", r.drag_change, 0.0,
+                      r.drag_change, 0.002)};
+}
+
 }  // namespace
 
 const std::vector<ValidationCase>& validation_cases() {
@@ -352,6 +384,10 @@ const std::vector<ValidationCase>& validation_cases() {
        elastic_cube},
       {"lame_cylinder_2d", "thick-walled cylinder pressurised by fluid: radial and hoop stress against Lame (3 %)",
        lame_cylinder},
+      {"rigid_top_3d", "rigid symmetric top in free fall: every particle against the analytical Newton-Euler motion",
+       rigid_top},
+      {"settling_cylinder_2d", "rigid cylinder settling through a periodic array: drag against Sangani & Acrivos (2 %)",
+       settling_cylinder},
   };
   return cases;
 }

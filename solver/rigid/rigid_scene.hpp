@@ -1,0 +1,22 @@
+#pragma once
+// Rigid bodies of a scene: their particles, mass, centre of mass and inertia from the particles
+// (Pazdniakou eqs. 62, 64), across periodic sides by the minimum image.
+#include <vector>
+
+#include "rigid/rigid_bodies.hpp"
+#include "scene/scene.hpp"
+
+namespace psph {
+
+struct SceneRigidBodies {
+  std::vector<RigidBodyState> state;          // at t = 0
+  std::vector<std::vector<int>> members;      // particle indices (= ids) of each body
+  std::vector<std::vector<Vec3d>> offsets;    // each member's position relative to the centre of mass
+};
+
+SceneRigidBodies rigid_bodies_of(const Scene& sc);
+
+// Adds each body's rotation omega x (x - X) to its particles' velocities.
+void add_rigid_rotation(Scene& sc);
+
+}  // namespace psph
