@@ -16,6 +16,7 @@
 #include "io/checkpoint_file.hpp"
 #include "io/particle_output.hpp"
 #include "io/run_directory.hpp"
+#include "monitors/rigid_body_monitor.hpp"
 #include "monitors/two_phase.hpp"
 #include "scene/case_file.hpp"
 #include "scene/embedded_cases.hpp"
@@ -131,6 +132,8 @@ int drive(Case& c, const RunOptions& opt) {
   const bool damped = elastic && c.scene.options.solid_damping_rate > 0;
   if (elastic) rd->add_monitor_columns({"elastic_energy"});
   if (damped) rd->add_monitor_columns({"dissipated_energy"});
+  const int bodies = static_cast<int>(engine->rigid_bodies().size());
+  if (bodies > 0) rd->add_monitor_columns(rigid_body_columns(engine->dimension(), bodies));
   std::unique_ptr<TwoPhaseMonitor> two_phase;
   if (c.two_phase) {
     two_phase = std::make_unique<TwoPhaseMonitor>(c.scene, c.monitor_region);
@@ -142,6 +145,10 @@ int drive(Case& c, const RunOptions& opt) {
       const StepStats st = engine->stats();
       if (elastic) extra.push_back(st.elastic_energy);
       if (damped) extra.push_back(st.dissipated_energy);
+    }
+    if (bodies > 0) {
+      const std::vector<double> row = rigid_body_row(*engine);
+      extra.insert(extra.end(), row.begin(), row.end());
     }
     if (!two_phase) return rd->monitor(*engine, extra);
     const bool before = two_phase->percolation_time() >= 0;
