@@ -30,6 +30,7 @@
 #include "solid/damping.hpp"
 #include "solid/elastic_force.hpp"
 #include "solid/fluid_coupling.hpp"
+#include "solid/solid_load.hpp"
 #include "solid/stress_form.hpp"
 #include "state/derived_fields.hpp"
 #include "state/particles.hpp"
@@ -84,6 +85,9 @@ class Simulation final : public Engine {
       B::copy(s_.x0.data(), s_.x.data(), sizeof(Vec<D>) * n_);
       s_.mirror.upload(clamp_mirror_partners(sc));
     }
+    if (!sc.solid_loads.empty())
+      s_.enable_solid_loads(std::vector<std::int32_t>(sc.load_mask.begin(), sc.load_mask.end()));
+    solid_loads_ = sc.solid_loads;
     rigid_.setup(sc, s_);
     has_rigid_ = rigid_.active();
     if (has_fluid_ && has_solids()) s_.enable_coupling();
@@ -435,6 +439,23 @@ class Simulation final : public Engine {
     if (stress_form())
       B::for_each(n_, StressForcePass<D>{view_nb_reference(), kern_, s_.view(), mats_, zeta, traction});
     else B::for_each(n_, ElasticForcePass<D>{view_nb_reference(), kern_, s_.view(), mats_, zeta});
+    if (!solid_loads_.empty()) B::for_each(n_, SolidLoadPass<D>{s_.view(), solid_loads_at(force_time_)});
+  }
+
+  // The [[solid_load]]s at time t: tractions as forces on each particle's share of the surface
+  // (spacing^(D-1)), ramped; imposed velocities until their duration ends.
+  SolidLoads<D> solid_loads_at(double t) const {
+    SolidLoads<D> l;
+    l.count = static_cast<int>(solid_loads_.size());
+    const double area = std::pow(opt_.spacing, D - 1);
+    for (int g = 0; g < l.count; ++g) {
+      const SceneSolidLoad& sl = solid_loads_[g];
+      l.kind[g] = sl.velocity ? SolidLoadKind::Velocity : SolidLoadKind::Traction;
+      const double f = sl.velocity ? (sl.duration > 0 && t > sl.duration ? 0.0 : 1.0)
+                                   : area * (sl.ramp_time > 0 && t < sl.ramp_time ? t / sl.ramp_time : 1.0);
+      for (int d = 0; d < D; ++d) l.value[g][d] = Real(f * sl.value[d]);
+    }
+    return l;
   }
 
   // v <- (I - dt L)^-1 v on the fluid (fluid/viscosity.hpp), L at the current positions with the
@@ -464,6 +485,7 @@ class Simulation final : public Engine {
   // Neighbours, density (or EOS after continuity), forces at the new positions.
   // Body-force regions at time t, each scaled by min(1, t / ramp_time): a drive applied quasi-statically.
   void ramp_body_forces(double t) {
+    force_time_ = t;
     for (int r = 0; r < mats_.region_count; ++r) {
       const double ramp = regions_[r].ramp_time, f = ramp > 0 && t < ramp ? t / ramp : 1.0;
       for (int d = 0; d < D; ++d) mats_.region[r].acceleration[d] = Real(f * regions_[r].acceleration[d]);
@@ -559,6 +581,8 @@ class Simulation final : public Engine {
   Kernel<D> kern_{};
   MaterialTable<D> mats_{};
   std::vector<SceneForceRegion> regions_;  // full body forces of the regions (mats_ holds them ramped)
+  std::vector<SceneSolidLoad> solid_loads_;
+  double force_time_ = 0;  // the time at which the forces being evaluated act
   ParticleState<D, B> s_;
   DeviceArray<int, B> keys_, perm_, bucket_start_, bucket_end_;
   DeviceArray<std::uint8_t, B> cell_near_;

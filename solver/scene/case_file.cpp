@@ -5,6 +5,7 @@
 #include "integrate/timestep.hpp"
 #include "scene/case_reader.hpp"
 #include "scene/visualisation_options.hpp"
+#include "solid/solid_load.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -226,6 +227,34 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       f.ramp_time = r.non_negative("ramp_time", 0.0);
       r.finish();
       sc.force_regions.push_back(f);
+    }
+  }
+  if (const toml::node* g = top.node("solid_load")) {
+    // Tractions and imposed velocities on groups of elastic particles (solid/solid_load.hpp).
+    const toml::array* arr = g->as_array();
+    if (!arr || !arr->is_array_of_tables()) top.fail("solid_load", "expected an array of tables [[solid_load]]", g);
+    if (arr->size() > static_cast<std::size_t>(kMaxSolidLoads))
+      top.fail("solid_load", "expected at most " + std::to_string(kMaxSolidLoads) + " loads", g);
+    int idx = 0;
+    for (const auto& e : *arr) {
+      CaseReader r(*e.as_table(), file, "solid_load[" + std::to_string(idx++) + "]");
+      SceneSolidLoad l;
+      const std::string mname = r.string("material");
+      if (!mat_index.count(mname) || sc.materials[mat_index[mname]].props.kind != MaterialKind::Elastic)
+        r.fail("material", "expected the name of an elastic material under [materials], got \"" + mname + "\"");
+      l.material = mat_index[mname];
+      l.lower = r.vec<double>("lower", D);
+      l.upper = r.vec<double>("upper", D);
+      for (int k = 0; k < D; ++k)
+        if (!(l.upper[k] > l.lower[k])) r.fail("upper", "expected upper > lower on every axis (axis " + std::to_string(k) + ")");
+      if (r.has("traction") == r.has("velocity"))
+        r.fail("traction", "give exactly one of traction (Pa, on each particle's share of the surface) and velocity (m/s)");
+      l.velocity = r.has("velocity");
+      l.value = r.vec<double>(l.velocity ? "velocity" : "traction", D);
+      if (l.velocity) l.duration = r.non_negative("duration", 0.0);
+      else l.ramp_time = r.non_negative("ramp_time", 0.0);
+      r.finish();
+      sc.solid_loads.push_back(l);
     }
   }
   if (top.has("open_boundary")) {

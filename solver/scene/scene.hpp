@@ -33,6 +33,16 @@ struct SceneForceRegion {
   double ramp_time = 0;  // s: the force grows linearly from zero over this time (0: full at once)
 };
 
+// A load on the elastic particles of one material inside a box (solid/solid_load.hpp).
+struct SceneSolidLoad {
+  int material = 0;
+  std::array<double, 3> lower{0, 0, 0}, upper{0, 0, 0};
+  bool velocity = false;                  // imposed velocity, else traction
+  std::array<double, 3> value{0, 0, 0};   // traction (Pa) or velocity (m/s)
+  double ramp_time = 0;  // s: a traction grows linearly from zero over this time
+  double duration = 0;   // s: an imposed velocity stops after this time (0: never)
+};
+
 // Open pressure inlet and outlet across a periodic axis (boundary/open_boundary.hpp).
 struct SceneOpenBoundary {
   int axis = -1;  // -1: none
@@ -82,6 +92,7 @@ struct Scene {
   std::array<bool, 3> periodic{false, false, false};
   std::vector<SceneMaterial> materials;
   std::vector<SceneForceRegion> force_regions;
+  std::vector<SceneSolidLoad> solid_loads;
   SceneOpenBoundary open_boundary;
   SolverOptions options;
 
@@ -92,6 +103,8 @@ struct Scene {
   // velocity (rad/s, world frame; z in 2D). Particle velocities already include the rotation.
   std::vector<int> body;
   std::vector<std::array<double, 3>> body_angular_velocity;
+  // Each particle's [[solid_load]]s: bit g for load g.
+  std::vector<int> load_mask;
 
   int count() const { return static_cast<int>(material.size()); }
 };

@@ -137,6 +137,20 @@ void build_particles(Case& c) {
       throw CaseError(c.file + ": geometry[" + std::to_string(g) +
                       "]: this rigid body holds no particle (later geometries cover it, or it is smaller than a spacing)");
   add_rigid_rotation(sc);
+  // Each [[solid_load]] takes the particles of its material inside its box.
+  sc.load_mask.assign(sc.material.size(), 0);
+  for (std::size_t l = 0; l < sc.solid_loads.size(); ++l) {
+    const SceneSolidLoad& ld = sc.solid_loads[l];
+    long taken = 0;
+    for (int i = 0; i < sc.count(); ++i) {
+      if (sc.material[i] != ld.material) continue;
+      bool in = true;
+      for (int k = 0; k < D; ++k) in = in && sc.x[i * D + k] >= ld.lower[k] && sc.x[i * D + k] <= ld.upper[k];
+      if (in) sc.load_mask[i] |= 1 << l, ++taken;
+    }
+    if (taken == 0)
+      throw CaseError(c.file + ": solid_load[" + std::to_string(l) + "]: the box holds no particle of its material");
+  }
   if (moving == 0)
     throw CaseError(c.file + ": geometry: the geometry yields no fluid, elastic or rigid particles (" +
                     std::to_string(sc.material.size()) + " particles in all); check the shapes and the domain");

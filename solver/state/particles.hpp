@@ -49,6 +49,8 @@ struct ParticleView {
   Real* p_ambient;              // the fluid's pressure carried into an elastic body's surface layer
   // Rigid bodies only (null otherwise): rigid/.
   std::int32_t* body;  // the rigid body a particle belongs to, -1 if none
+  // Loaded elastic particles only (null otherwise): solid/solid_load.hpp.
+  std::int32_t* load_mask;  // the [[solid_load]]s a particle belongs to, bit g for load g
 };
 
 template <class T, class B>
@@ -91,7 +93,7 @@ class ParticleState {
                            colour.data(), colour_gradient.data(), curvature.data(), x0.data(), u.data(),
                            strain.data(), stress.data(), shepard.data(), shepard_grad.data(), kcorr.data(),
                            mirror.data(), index_of_id.data(), visc_scale.data(),
-                           fluid_contact.data(), p_ambient.data(), body.data()};
+                           fluid_contact.data(), p_ambient.data(), body.data(), load_mask.data()};
   }
 
   // Allocates and registers the interface fields (a case with two fluids and surface tension).
@@ -136,6 +138,12 @@ class ParticleState {
     reg(body, FieldType::Int, 1, "rigid_body", "-", "the rigid body a particle belongs to, -1 if none");
   }
 
+  // Registers each particle's [[solid_load]]s, bit g for load g (solid/solid_load.hpp).
+  void enable_solid_loads(const std::vector<std::int32_t>& group_of_particle) {
+    load_mask.upload(group_of_particle);
+    reg(load_mask, FieldType::Int, 1, "solid_load_mask", "-", "the [[solid_load]]s a particle belongs to: bit g for load g");
+  }
+
   // Reorders every registered field: field[i] <- field[perm[i]].
   void permute(const int* perm) {
     for (const auto& f : registry_.all()) f.permute(perm);
@@ -156,6 +164,7 @@ class ParticleState {
   DeviceArray<std::int32_t, B> mirror;
   DeviceArray<std::int32_t, B> index_of_id;  // not registered: recomputed after every reordering
   DeviceArray<std::int32_t, B> body;         // empty unless enable_rigid()
+  DeviceArray<std::int32_t, B> load_mask;   // empty unless enable_solid_loads()
   DeviceArray<Real, B> visc_scale, p_ambient;  // empty unless enable_coupling()
   DeviceArray<std::uint8_t, B> fluid_contact;
 

@@ -1,0 +1,46 @@
+#pragma once
+// Loads on groups of elastic particles (`[[solid_load]]`; groups chosen by box at the start):
+//   traction: an external force t A on each particle of the group, A = spacing^(D-1) its share of
+//             the surface, t in Pa: a confining stress sigma on a face is t = -sigma n_out on its
+//             outermost layer (Pazdniakou digest §7 item 24, Deptulski digest O-A4);
+//   velocity: the particles move at an imposed velocity (an imposed displacement v x duration,
+//             then held): they still take part in the solid's sums (Deptulski digest O-N6).
+// A particle may belong to several loads (a corner to two faces' tractions): a bit per load.
+// Applied after the solid's own forces (solid/stress_form.hpp, elastic_force.hpp).
+#include <cstdint>
+
+#include "fluid/material.hpp"
+#include "state/particles.hpp"
+
+namespace psph {
+
+constexpr int kMaxSolidLoads = 4;
+enum class SolidLoadKind : int { Traction = 0, Velocity = 1 };
+
+template <int D>
+struct SolidLoads {
+  int count = 0;
+  SolidLoadKind kind[kMaxSolidLoads] = {};
+  Vec<D> value[kMaxSolidLoads] = {};  // force per particle (N) or velocity (m/s), at this step
+};
+
+template <int D>
+struct SolidLoadPass {
+  ParticleView<D> s;
+  SolidLoads<D> loads;
+  PSPH_HD void operator()(int i) const {
+    const std::int32_t mask = s.load_mask[i];
+    if (mask == 0) return;
+    for (int g = 0; g < loads.count; ++g) {
+      if (!(mask & (1 << g))) continue;
+      if (loads.kind[g] == SolidLoadKind::Traction) s.a[i] += loads.value[g] * (Real(1) / s.m[i]);
+    }
+    for (int g = 0; g < loads.count; ++g)  // an imposed velocity overrides any force
+      if ((mask & (1 << g)) && loads.kind[g] == SolidLoadKind::Velocity) {
+        s.v[i] = loads.value[g];
+        s.a[i] = Vec<D>::zero();
+      }
+  }
+};
+
+}  // namespace psph
