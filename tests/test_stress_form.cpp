@@ -119,3 +119,67 @@ material = "clay"
   EXPECT_LT(share[SolidFormulation::Stress], 1e-4);
   EXPECT_GT(share[SolidFormulation::Displacement], 100 * share[SolidFormulation::Stress]);
 }
+
+// Monaghan's artificial viscosity and XSPH on a solid (solid/artificial_viscosity.hpp): a block
+// squeezed by its initial velocity keeps its momentum exactly, and the viscosity takes energy from
+// it step by step (the kinetic + elastic energy never rises); without them the energy is kept.
+TEST(StressForm, ArtificialViscosityKeepsMomentumAndTakesEnergy) {
+  const std::string text = R"(
+[case]
+name = "block"
+dimension = 2
+[domain]
+lower = [-0.2, -0.2]
+upper = [0.2, 0.2]
+[discretisation]
+spacing = 0.01
+support_radius = 0.02
+[materials.clay]
+kind = "elastic"
+density = 2000.0
+young_modulus = 1.0e6
+poisson_ratio = 0.1
+[solid]
+artificial_viscosity = 1.0
+artificial_viscosity_beta = 2.0
+xsph = 0.5
+[time]
+end = 1.0
+[[geometry]]
+shape = "box"
+lower = [-0.1, -0.1]
+upper = [0.1, 0.12]
+material = "clay"
+)";
+  auto energy_after = [&](const std::string& t, double& momentum_error) {
+    Case c = built(t);
+    for (int i = 0; i < c.scene.count(); ++i)  // squeezed along x, drifting along y
+      c.scene.v[2 * i] = -0.01 * std::sin(M_PI * c.scene.x[2 * i] / 0.1), c.scene.v[2 * i + 1] = 0.003;
+    auto e = make_engine(c.scene, "cpu");
+    auto momentum = [&] {
+      const auto v = e->field("velocity"), m = e->field("mass");
+      std::array<double, 2> p{0, 0};
+      for (int i = 0; i < e->particles(); ++i) p[0] += m[i] * v[2 * i], p[1] += m[i] * v[2 * i + 1];
+      return p;
+    };
+    const auto p0 = momentum();
+    const double e0 = e->stats().kinetic_energy + e->stats().elastic_energy;
+    double previous = e0, rise = 0;
+    for (int s = 0; s < 400; ++s) {
+      e->step(1.0);
+      const double en = e->stats().kinetic_energy + e->stats().elastic_energy;
+      rise = std::max(rise, en - previous);
+      previous = en;
+    }
+    const auto p1 = momentum();
+    momentum_error = std::hypot(p1[0] - p0[0], p1[1] - p0[1]) / std::hypot(p0[0], p0[1]);
+    EXPECT_LT(rise, 1e-3 * e0);
+    return previous / e0;
+  };
+  double err_visc = 0, err_plain = 0;
+  const double with = energy_after(text, err_visc);
+  const double without = energy_after(replaced(text, "artificial_viscosity = 1.0\nartificial_viscosity_beta = 2.0\nxsph = 0.5\n", ""), err_plain);
+  EXPECT_LT(err_visc, 1e-12);
+  EXPECT_LT(with, 0.9);
+  EXPECT_NEAR(without, 1.0, 1e-3);
+}

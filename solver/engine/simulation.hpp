@@ -26,6 +26,7 @@
 #include "rigid/rigid_body.hpp"
 #include "rigid/rigid_motion.hpp"
 #include "scene/scene.hpp"
+#include "solid/artificial_viscosity.hpp"
 #include "solid/clamp_partners.hpp"
 #include "solid/damping.hpp"
 #include "solid/elastic_force.hpp"
@@ -439,6 +440,10 @@ class Simulation final : public Engine {
     if (stress_form())
       B::for_each(n_, StressForcePass<D>{view_nb_reference(), kern_, s_.view(), mats_, zeta, traction});
     else B::for_each(n_, ElasticForcePass<D>{view_nb_reference(), kern_, s_.view(), mats_, zeta});
+    if (opt_.solid_artificial_viscosity > 0 || opt_.solid_artificial_viscosity_beta > 0 || opt_.solid_xsph > 0)
+      B::for_each(n_, SolidViscosityPass<D>{view_nb_reference(), kern_, s_.view(), mats_, Real(opt_.solid_artificial_viscosity),
+                                            Real(opt_.solid_artificial_viscosity_beta), Real(opt_.solid_xsph),
+                                            Real(smoothing_length())});
     if (!solid_loads_.empty()) B::for_each(n_, SolidLoadPass<D>{s_.view(), solid_loads_at(force_time_)});
   }
 

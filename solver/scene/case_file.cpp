@@ -157,7 +157,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     // §7 item 17). The densest: a wall's volume m/rho follows its pressure through rho0 + p/c^2, so
     // a wall under water with a gas's rest density would shrink by the water's head over 1 kg/m^3.
     // Without fluids, walls only clamp an elastic solid and take its density.
-    for (const char* key : {"formulation", "damping_rate", "coupling"})
+    for (const char* key : {"formulation", "damping_rate", "coupling", "artificial_viscosity", "artificial_viscosity_beta", "xsph"})
       if (!has_elastic && solid.has(key))
         solid.fail(key, "expected a material with kind = \"elastic\" for it to apply to");
     const bool has_fluid = has_liquid || has_gas;
@@ -166,6 +166,10 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     // Mass-proportional damping a -= zeta v for quasi-static loading (Pazdniakou §3.1.4's Verlet
     // parameter theta is zeta dt).
     o.solid_damping_rate = solid.non_negative("damping_rate", 0.0);
+    o.solid_artificial_viscosity = solid.non_negative("artificial_viscosity", 0.0);
+    o.solid_artificial_viscosity_beta = solid.non_negative("artificial_viscosity_beta", 0.0);
+    o.solid_xsph = solid.non_negative("xsph", 0.0);
+    if (o.solid_xsph > 1) solid.fail("xsph", "expected an XSPH epsilon in [0, 1]");
     // The traction needs the stress form's boundary sums; the displacement form couples by pairs.
     const bool stress = o.solid_formulation == SolidFormulation::Stress;
     const std::string cp = solid.choice("coupling", {"traction", "pair", "pair_eos"}, stress ? "traction" : "pair");

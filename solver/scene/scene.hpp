@@ -83,6 +83,8 @@ struct SolverOptions {
   // Elastic solids ([solid]).
   SolidFormulation solid_formulation = SolidFormulation::Stress;
   double solid_damping_rate = 0;  // zeta (1/s): a -= zeta v on elastic particles
+  // Monaghan artificial viscosity and XSPH on elastic solids (solid/artificial_viscosity.hpp).
+  double solid_artificial_viscosity = 0, solid_artificial_viscosity_beta = 0, solid_xsph = 0;
   SolidCoupling solid_coupling = SolidCoupling::Traction;
 };
 

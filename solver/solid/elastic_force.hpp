@@ -55,7 +55,7 @@ struct ElasticForcePass {
     Vec<D> f = Vec<D>::zero();
     nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
       const int mj = s.material[j];
-      if (r <= Real(0) || mats.is_fluid(mj)) return;
+      if (r <= Real(0) || mats.is_fluid(mj) || mats.is_rigid(mj)) return;  // rigid: contact only
       Real k = k_i, mu = mu_i;
       if (mats.is_elastic(mj) && mj != mi)
         k = harmonic_mean(k_i, mats[mj].bulk_modulus), mu = harmonic_mean(mu_i, mats[mj].shear_modulus);
