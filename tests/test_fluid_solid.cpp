@@ -136,3 +136,26 @@ TEST(FluidSolid, DampingEnergyIsAccountedFor) {
   EXPECT_LT(t[0], 0.5 * e0);
   EXPECT_NEAR((t[0] + t[1]) / e0, 1.0, 0.01);
 }
+
+// Clamps hold in a case with fluids too: their walls list their elastic neighbours wherever the
+// fluid is (before, walls away from the fluid had no lists, and the rod's partners lost the
+// clamp's reaction).
+TEST(FluidSolid, ClampsHoldWithAFluidInTheCase) {
+  Case c = vibrating_rod_case(1, false);
+  const RodVibration dry = run_vibrating_rod(c, 1, false, "cpu");
+  Scene& sc = c.scene;
+  SceneMaterial water;
+  water.name = "water";
+  water.props.kind = MaterialKind::Fluid;
+  water.props.rest_density = 1000, water.props.sound_speed = 10;
+  sc.materials.push_back(water);
+  const double dx = sc.options.spacing, x_end = sc.upper[0];
+  sc.upper[0] += 0.03;
+  for (int k = 0; k < 10; ++k) {  // a column of water two supports beyond the right clamp
+    sc.x.push_back(x_end + 0.015 + k * dx), sc.v.push_back(0), sc.mass.push_back(1000 * dx);
+    sc.material.push_back(static_cast<int>(sc.materials.size()) - 1), sc.body.push_back(-1), sc.load_mask.push_back(0);
+  }
+  const RodVibration wet = run_vibrating_rod(c, 1, false, "cpu");
+  EXPECT_NEAR(wet.beta2, dry.beta2, 1e-4 * dry.beta2);  // the water only changes the steps a little
+  EXPECT_LT(wet.energy_drift, 0.01);
+}

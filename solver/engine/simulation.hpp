@@ -319,6 +319,7 @@ class Simulation final : public Engine {
     for (;;) {
       if (nb_index_.size() < std::size_t(capacity_) * n_) nb_index_.resize(std::size_t(capacity_) * n_);
       B::for_each(n_, BuildNeighbourList<D>{view_cells(), s_.material.data(), mats_, s_.near_fluid.data(),
+                                            has_elastic_ && has_walls_ ? s_.mirror.data() : nullptr,
                                             !continuity(), !has_fluid_, nb_index_.data(), nb_count_.data(),
                                             nb_fluid_count_.data(), capacity_, list_stride_i(), list_stride_k()});
       const int most = n_ ? B::template max_of<int>(n_, ListCount<D>{nb_count_.data()}) : 0;

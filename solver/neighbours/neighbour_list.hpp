@@ -50,13 +50,16 @@ struct NeighbourList {
 // Fills the lists from the cell list; count[i] may exceed capacity, in which case the caller
 // grows the capacity and builds again. Walls need no list far from the fluid, and near it only
 // their fluid neighbours unless `walls_need_walls` (wall density by summation). Without fluids
-// (`no_fluid`: walls only clamp elastic solids) every wall lists all its neighbours.
+// (`no_fluid`: walls only clamp elastic solids) every wall lists all its neighbours, and so does a
+// clamp wall (`mirror` >= 0, solid/clamp.hpp) in any case: its partner takes a reaction through
+// its elastic neighbours.
 template <int D>
 struct BuildNeighbourList {
   NeighbourView<D> cells;
   const std::uint8_t* material;
   MaterialTable<D> mats;
   const std::uint8_t* near_fluid;  // per particle (neighbours/fluid_proximity.hpp)
+  const std::int32_t* mirror;      // clamp partners (null without elastic solids and walls)
   bool walls_need_walls;
   bool no_fluid;
   int* index;
@@ -70,7 +73,7 @@ struct BuildNeighbourList {
       if (n < capacity) row[n * stride_k] = j;
       ++n;
     };
-    const bool full = no_fluid || mats.is_dynamic(material[i]);  // fluids and solids: every neighbour
+    const bool full = no_fluid || mats.is_dynamic(material[i]) || (mirror && mirror[i] >= 0);
     if (full || near_fluid[i]) cells.for_each_fluid(i, add);
     fluid_count[i] = n;
     if (full || (near_fluid[i] && walls_need_walls)) cells.for_each_non_fluid(i, add);
