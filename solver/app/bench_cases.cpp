@@ -47,6 +47,21 @@ std::vector<BenchSpec> bench_specs(const std::string& backend, bool quick) {
     plate.steps = quick ? 100 : 2000;
     s.push_back(plate);
   }
+  BenchSpec svk;  // the stress form with Saint Venant-Kirchhoff: fixed reference lists, P and F
+  svk.name = "oscillating_plate_2d_svk";
+  svk.build = [] {
+    Case c = oscillating_plate_case(0.001, 0, SolidFormulation::Stress);
+    c.scene.options.solid_model = SolidModel::SaintVenantKirchhoff;
+    return c;
+  };
+  svk.steps = quick ? 100 : 2000;
+  s.push_back(svk);
+  // A rigid disc settling through a viscous fluid: the bodies' sums and placement on top of the fluid.
+  BenchSpec settle;
+  settle.name = "settling_cylinder_2d";
+  settle.embedded_case = "settling_cylinder_2d";
+  settle.steps = quick ? 100 : 2000;
+  s.push_back(settle);
   BenchSpec cube;
   cube.name = "elastic_cube_3d";
   cube.embedded_case = "elastic_cube_3d";

@@ -107,6 +107,23 @@ PSPH_HD inline Real determinant(const Mat<D>& m) {
   }
 }
 
+// Cofactor matrix det(m) m^-T (defined also where m is singular): it maps an area vector of the
+// reference configuration to the current one (Nanson's formula, n da = cof(F) N dA).
+template <int D>
+PSPH_HD inline Mat<D> cofactor(const Mat<D>& m) {
+  Mat<D> c = Mat<D>::identity();
+  if constexpr (D == 2) {
+    c.a[0][0] = m.a[1][1], c.a[0][1] = -m.a[1][0], c.a[1][0] = -m.a[0][1], c.a[1][1] = m.a[0][0];
+  } else if constexpr (D == 3) {
+    for (int r = 0; r < 3; ++r)
+      for (int s = 0; s < 3; ++s) {
+        const int r1 = (r + 1) % 3, r2 = (r + 2) % 3, c1 = (s + 1) % 3, c2 = (s + 2) % 3;
+        c.a[r][s] = m.a[r1][c1] * m.a[r2][c2] - m.a[r1][c2] * m.a[r2][c1];
+      }
+  }
+  return c;
+}
+
 // Inverse by cofactors; returns false (and leaves `out` as identity) when |det| <= tiny.
 template <int D>
 PSPH_HD inline bool invert(const Mat<D>& m, Mat<D>& out, Real tiny) {

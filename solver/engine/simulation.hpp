@@ -23,6 +23,7 @@
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/fluid_proximity.hpp"
 #include "neighbours/neighbour_list.hpp"
+#include "neighbours/reference_list.hpp"
 #include "rigid/rigid_body.hpp"
 #include "rigid/rigid_motion.hpp"
 #include "scene/scene.hpp"
@@ -85,6 +86,7 @@ class Simulation final : public Engine {
       s_.enable_solid();
       B::copy(s_.x0.data(), s_.x.data(), sizeof(Vec<D>) * n_);
       s_.mirror.upload(clamp_mirror_partners(sc));
+      if (large_strain()) s_.enable_large_strain();
     }
     if (!sc.solid_loads.empty())
       s_.enable_solid_loads(std::vector<std::int32_t>(sc.load_mask.begin(), sc.load_mask.end()));
@@ -311,6 +313,18 @@ class Simulation final : public Engine {
     nb.x = s_.x0.data();
     return nb;
   }
+  // Total-Lagrangian large strain: the fixed lists of t = 0 (neighbours/reference_list.hpp).
+  bool large_strain() const { return opt_.solid_model == SolidModel::SaintVenantKirchhoff; }
+  ReferenceNeighbours<D> view_reference_lists() const {
+    return ReferenceNeighbours<D>{grid_, s_.x0.data(), s_.id.data(), s_.index_of_id.data(), reference_ids_.data(),
+                                  reference_count_.data(), reference_capacity_, kern_.support * kern_.support};
+  }
+  // Calls f with the solid's neighbours in the reference configuration.
+  template <class F>
+  void with_solid_neighbours(F&& f) const {
+    if (large_strain()) f(view_reference_lists());
+    else f(view_nb_reference());
+  }
   int list_stride_i() const { return B::list_rows_contiguous ? capacity_ : 1; }
   int list_stride_k() const { return B::list_rows_contiguous ? 1 : n_; }
 
@@ -335,7 +349,7 @@ class Simulation final : public Engine {
     B::for_each(n_, CellKeyPass<D>{grid_, s_.x.data(), s_.material.data(), mats_, keys_.data()});
     B::sort_by_cell(keys_.data(), n_, 2 * grid_.total, perm_.data(), bucket_start_.data(), bucket_end_.data());
     s_.permute(perm_.data());
-    if ((has_elastic_ && has_walls_) || has_rigid_)  // the clamps' mirror, the bodies' particles
+    if ((has_elastic_ && (has_walls_ || large_strain())) || has_rigid_)  // clamps, reference lists, bodies
       B::for_each(n_, IndexOfIdPass<D>{s_.view()});
     if (every_particle) {
       s_.near_fluid.upload(std::vector<std::uint8_t>(n_, 1));
@@ -344,6 +358,12 @@ class Simulation final : public Engine {
       B::for_each(n_, NearFluid<D>{grid_, s_.x.data(), cell_near_.data(), s_.near_fluid.data()});
     }
     build_lists();
+    if (large_strain() && reference_count_.size() == 0) {  // at t = 0: current = reference
+      reference_capacity_ = capacity_;
+      reference_ids_.resize(std::size_t(capacity_) * n_), reference_count_.resize(n_);
+      B::for_each(n_, RecordReferenceNeighbours<D>{view_nb(), s_.view(), mats_, reference_ids_.data(),
+                                                   reference_count_.data(), capacity_});
+    }
     x_build_.resize(n_);
     B::copy(x_build_.data(), s_.x.data(), sizeof(Vec<D>) * n_);
   }
@@ -432,19 +452,23 @@ class Simulation final : public Engine {
     B::for_each(n_, DisplacementPass<D>{s_.view(), grid_});
     if (has_walls_) B::for_each(n_, ClampDisplacementPass<D>{s_.view(), mats_});
     if (stress_form() || has_fluid_)  // the fluid reads the solid's volume change
-      B::for_each(n_, StrainStressPass<D>{view_nb_reference(), kern_, s_.view(), mats_});
+      with_solid_neighbours([&](auto nb) {
+        B::for_each(n_, StrainStressPass<D, decltype(nb)>{nb, kern_, s_.view(), mats_});
+      });
   }
   void solid_force() {
     const Real zeta = Real(opt_.solid_damping_rate);
     const bool traction = has_fluid_ && opt_.solid_coupling == SolidCoupling::Traction;
     if (traction) B::for_each(n_, AmbientPressurePass<D>{view_nb(), kern_, s_.view(), mats_});
-    if (stress_form())
-      B::for_each(n_, StressForcePass<D>{view_nb_reference(), kern_, s_.view(), mats_, zeta, traction});
-    else B::for_each(n_, ElasticForcePass<D>{view_nb_reference(), kern_, s_.view(), mats_, zeta});
-    if (opt_.solid_artificial_viscosity > 0 || opt_.solid_artificial_viscosity_beta > 0 || opt_.solid_xsph > 0)
-      B::for_each(n_, SolidViscosityPass<D>{view_nb_reference(), kern_, s_.view(), mats_, Real(opt_.solid_artificial_viscosity),
-                                            Real(opt_.solid_artificial_viscosity_beta), Real(opt_.solid_xsph),
-                                            Real(smoothing_length())});
+    with_solid_neighbours([&](auto nb) {
+      using NB = decltype(nb);
+      if (stress_form()) B::for_each(n_, StressForcePass<D, NB>{nb, kern_, s_.view(), mats_, zeta, traction});
+      else B::for_each(n_, ElasticForcePass<D>{view_nb_reference(), kern_, s_.view(), mats_, zeta});
+      if (opt_.solid_artificial_viscosity > 0 || opt_.solid_artificial_viscosity_beta > 0 || opt_.solid_xsph > 0)
+        B::for_each(n_, SolidViscosityPass<D, NB>{nb, kern_, s_.view(), mats_, Real(opt_.solid_artificial_viscosity),
+                                                  Real(opt_.solid_artificial_viscosity_beta), Real(opt_.solid_xsph),
+                                                  Real(smoothing_length())});
+    });
     if (!solid_loads_.empty()) B::for_each(n_, SolidLoadPass<D>{s_.view(), solid_loads_at(force_time_)});
   }
 
@@ -593,6 +617,8 @@ class Simulation final : public Engine {
   DeviceArray<int, B> keys_, perm_, bucket_start_, bucket_end_;
   DeviceArray<std::uint8_t, B> cell_near_;
   DeviceArray<int, B> nb_index_, nb_count_, nb_fluid_count_;
+  DeviceArray<std::int32_t, B> reference_ids_, reference_count_;  // large strain: lists of t = 0 by id
+  int reference_capacity_ = 0;
   int capacity_ = 32;
   DeviceArray<Vec<D>, B> x_build_;  // positions at the last list build
   BiCGStab<D, B> krylov_;

@@ -55,7 +55,7 @@ struct DensitySummationPass {
       // A solid neighbour fills its volume with i's rest density (no deficit at the interface,
       // whatever the solid's own density).
       const Real m_j = number                                  ? m_i
-                       : solids && mats.is_solid(s.material[j]) ? s.rho0[i] * mats.volume_of(s, j)
+                       : solids && mats.is_solid(s.material[j]) ? s.rho[i] * mats.volume_of(s, j)
                                                                 : s.m[j];
       num += m_j * w * ratio;
       if (normalised) den += w / s.number_density[j];

@@ -58,10 +58,12 @@ struct MaterialTable {
   // rho stays the reference one, solid/) its current volume V0 (1 + tr eps) in small strain: with
   // the reference volume a solid compressed by 1e-3 looked 1e-3 denser to the fluid's density sum,
   // a spurious pressure of K_fluid 1e-3 / 2 at its surface.
+  // In large strain (Saint Venant-Kirchhoff, s.defgrad set) the current volume is V0 det F.
   template <class View>
   PSPH_HD PSPH_PAIR Real volume_of(const View& s, int j) const {
     const Real v = s.m[j] / s.rho[j];
-    return is_elastic(s.material[j]) ? v * (Real(1) + trace(s.strain[j])) : v;
+    if (!is_elastic(s.material[j])) return v;
+    return v * (s.defgrad ? determinant(s.defgrad[j]) : Real(1) + trace(s.strain[j]));
   }
   // Particles that the forces move (the others are walls, moved only by their prescribed velocity).
   PSPH_HD bool is_dynamic(int k) const { return m[k].kind != MaterialKind::Wall; }

@@ -18,6 +18,9 @@ enum class DensityMethod { Summation, NormalisedSummation, NumberSummation, Cont
 enum class Integrator { Leapfrog, VelocityVerlet };
 // Elastic solids: the stress form (solid/stress_form.hpp) or the displacement form (solid/elastic_force.hpp).
 enum class SolidFormulation { Stress, Displacement };
+// The stress form's law: small-strain linear, or large-strain Saint Venant-Kirchhoff in total
+// Lagrangian form (solid/constitutive.hpp).
+enum class SolidModel { Linear, SaintVenantKirchhoff };
 // How fluids and elastic solids exchange forces (solid/fluid_coupling.hpp).
 enum class SolidCoupling { Traction, Pair, PairEos };
 
@@ -82,6 +85,7 @@ struct SolverOptions {
   bool contact_line_force = true;  // the unbalanced Young force at contact lines (interface/contact_line.hpp)
   // Elastic solids ([solid]).
   SolidFormulation solid_formulation = SolidFormulation::Stress;
+  SolidModel solid_model = SolidModel::Linear;
   double solid_damping_rate = 0;  // zeta (1/s): a -= zeta v on elastic particles
   // Monaghan artificial viscosity and XSPH on elastic solids (solid/artificial_viscosity.hpp).
   double solid_artificial_viscosity = 0, solid_artificial_viscosity_beta = 0, solid_xsph = 0;

@@ -16,9 +16,9 @@
 
 namespace psph {
 
-template <int D>
+template <int D, class NB = NeighbourList<D>>
 struct SolidViscosityPass {
-  NeighbourList<D> nb;  // reference positions
+  NB nb;  // reference positions
   Kernel<D> kern;
   ParticleView<D> s;
   MaterialTable<D> mats;

@@ -27,14 +27,14 @@ struct ClampDisplacementPass {
 // dE/du_w = V_w sum_k V_k sigma_k g_kw of wall w over its elastic neighbours k (g_kw = K_k
 // grad W~_kw, stored by the strain pass): with u_w = 2 u_wall - u_p it acts on the partner p as the
 // force +dE/du_w (StressForcePass adds it; the mirror is one to one, so each wall's is summed once).
-template <int D>
-PSPH_HD inline Vec<D> clamp_reaction(const NeighbourList<D>& nb, const Kernel<D>& kern, const ParticleView<D>& s,
+template <int D, class NB>
+PSPH_HD inline Vec<D> clamp_reaction(const NB& nb, const Kernel<D>& kern, const ParticleView<D>& s,
                                      const MaterialTable<D>& mats, int w) {
   Vec<D> f = Vec<D>::zero();
   nb.for_each(w, [&](int k, const Vec<D>& rwk, Real r) PSPH_PAIR {
     if (!mats.is_elastic(s.material[k])) return;
     const Vec<D> g_kw = corrected_gradient(s, k, kern.W(r), kern.grad(rwk, r) * Real(-1));
-    f += s.stress[k] * g_kw * (s.m[k] / s.rho[k]);
+    f += (s.piola ? s.piola[k] : s.stress[k]) * g_kw * (s.m[k] / s.rho[k]);
   });
   return f * (s.m[w] / s.rho[w]);
 }

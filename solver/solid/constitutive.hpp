@@ -34,6 +34,43 @@ PSPH_HD inline Mat<D> small_strain_stress(const Mat<D>& eps, Real k, Real mu, Re
   return s;
 }
 
+// Saint Venant-Kirchhoff (Deptulski 2021 §2.4.1, digest §2.8.1): from H = grad u in the reference
+// configuration, F = I + H, the Green-Lagrange strain E = (H + H^T + H^T H) / 2, the second
+// Piola-Kirchhoff stress S = k tr(E) I + 2 mu dev(E) (the small-strain law applied to E, damage
+// included), the first P = F S, and the Cauchy stress sigma = P F^T / det F (for output and
+// damage criteria).
+template <int D>
+struct LargeStrain {
+  Mat<D> F, green_lagrange, piola, cauchy;
+};
+template <int D>
+PSPH_HD inline LargeStrain<D> saint_venant_kirchhoff(const Mat<D>& H, Real k, Real mu, Real damage = 0) {
+  LargeStrain<D> r;
+  r.F = H;
+  for (int a = 0; a < D; ++a) r.F.a[a][a] += Real(1);
+  for (int a = 0; a < D; ++a)
+    for (int b = 0; b < D; ++b) {
+      Real hh = 0;
+      for (int c = 0; c < D; ++c) hh += H.a[c][a] * H.a[c][b];
+      r.green_lagrange.a[a][b] = Real(0.5) * (H.a[a][b] + H.a[b][a] + hh);
+    }
+  const Mat<D> S = small_strain_stress(r.green_lagrange, k, mu, damage);
+  const Real inv_J = Real(1) / determinant(r.F);
+  for (int a = 0; a < D; ++a)
+    for (int b = 0; b < D; ++b) {
+      Real p = 0;
+      for (int c = 0; c < D; ++c) p += r.F.a[a][c] * S.a[c][b];
+      r.piola.a[a][b] = p;
+    }
+  for (int a = 0; a < D; ++a)
+    for (int b = 0; b < D; ++b) {
+      Real c = 0;
+      for (int e = 0; e < D; ++e) c += r.piola.a[a][e] * r.F.a[b][e];
+      r.cauchy.a[a][b] = c * inv_J;
+    }
+  return r;
+}
+
 // The solid's pressure -k tr(eps) (compression positive; in 2D plane strain tr(eps) is also the
 // volume change): Pazdniakou eq. 74's c_solid^2 (rho - rho0) with rho = rho0 (1 - tr eps).
 template <int D>

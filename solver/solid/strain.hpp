@@ -3,6 +3,8 @@
 //   eps_i = sym sum_j V_j (u_j - u_i) (x) K_i grad W~_ij   (Deptulski eq. 2.82 with the fixes of
 //   digest O-S2: displacements, symmetrised; the mixed correction eq. 2.63b, kernels/corrections.hpp)
 //   sigma_i = k tr(eps) I + 2 mu dev(eps)                  (eq. 2.84, constitutive.hpp)
+// or, with [solid] model = "saint_venant_kirchhoff" (large strain, total Lagrangian, Deptulski
+// §2.4.1), F = I + grad u, E = (F^T F - I)/2, S = k tr(E) I + 2 mu dev(E), P = F S (constitutive.hpp),
 // over the solid's particles and the walls in reach, which present the mirrored displacement
 // (solid/clamp.hpp): linear across a clamp, so the corrected gradient stays exact there, as it is
 // at any truncated support (free surfaces need nothing).
@@ -14,9 +16,9 @@ namespace psph {
 
 // The solid's neighbours of particle i: elastic and wall particles, not fluids, nor rigid bodies
 // (an inclusion meets the solid by contact only, rigid/rigid_body.hpp, Pazdniakou §5.2.4).
-template <int D>
+template <int D, class NB = NeighbourList<D>>
 struct SolidNeighbours {
-  NeighbourList<D> nb;
+  NB nb;
   ParticleView<D> s;
   MaterialTable<D> mats;
   template <class F>
@@ -30,25 +32,31 @@ struct SolidNeighbours {
 
 // Per elastic particle: the strain, the stress, and the gradient correction S_i, G_i, K_i kept for
 // the force pass.
-template <int D>
+template <int D, class NB = NeighbourList<D>>
 struct StrainStressPass {
-  NeighbourList<D> nb;
+  NB nb;
   Kernel<D> kern;
   ParticleView<D> s;
   MaterialTable<D> mats;
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
     if (!mats.is_elastic(mi)) return;
-    const SolidNeighbours<D> solid{nb, s, mats};
+    const SolidNeighbours<D, NB> solid{nb, s, mats};
     auto volume = [&](int j) { return s.m[j] / s.rho[j]; };
     const GradientCorrection<D> corr = gradient_correction(solid, kern, i, volume);
     Mat<D> grad_u = Mat<D>::zero();
     solid.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
       add_outer(grad_u, s.u[j] - s.u[i], corr.gradient(kern.W(r), kern.grad(rij, r)), volume(j));
     });
-    const Mat<D> eps = symmetric_part(grad_u);
-    s.strain[i] = eps;
-    s.stress[i] = small_strain_stress(eps, mats[mi].bulk_modulus, mats[mi].shear_modulus);
+    const Real k = mats[mi].bulk_modulus, mu = mats[mi].shear_modulus;
+    if (s.piola) {  // Saint Venant-Kirchhoff (large strain): Green-Lagrange strain, Piola stress
+      const LargeStrain<D> ls = saint_venant_kirchhoff(grad_u, k, mu);
+      s.strain[i] = ls.green_lagrange, s.stress[i] = ls.cauchy, s.piola[i] = ls.piola, s.defgrad[i] = ls.F;
+    } else {
+      const Mat<D> eps = symmetric_part(grad_u);
+      s.strain[i] = eps;
+      s.stress[i] = small_strain_stress(eps, k, mu);
+    }
     s.shepard[i] = corr.shepard, s.shepard_grad[i] = corr.grad_sum, s.kcorr[i] = corr.K;
   }
 };

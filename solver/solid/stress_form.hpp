@@ -13,9 +13,9 @@
 
 namespace psph {
 
-template <int D>
+template <int D, class NB = NeighbourList<D>>
 struct StressForcePass {
-  NeighbourList<D> nb;
+  NB nb;
   Kernel<D> kern;
   ParticleView<D> s;
   MaterialTable<D> mats;
@@ -26,10 +26,14 @@ struct StressForcePass {
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
     if (!mats.is_elastic(mi)) return;
-    const Mat<D> sigma_i = s.stress[i];
+    // Small strain: the Cauchy stress; large strain: the first Piola-Kirchhoff stress (the same
+    // sum in the reference configuration), and the fluid's pressure on the current surface,
+    // J F^-T N dA (Nanson), so that a solid at uniform Cauchy stress -p I stays in equilibrium.
+    const Mat<D> sigma_i = s.piola ? s.piola[i] : s.stress[i];
     const Real p_i = traction ? s.p_ambient[i] : Real(0);
+    const Mat<D> area = s.defgrad ? cofactor(s.defgrad[i]) : Mat<D>::identity();
     Vec<D> f = Vec<D>::zero();
-    SolidNeighbours<D>{nb, s, mats}.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
+    SolidNeighbours<D, NB>{nb, s, mats}.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
       if (r <= Real(0)) return;
       const Real W = kern.W(r);
       const Vec<D> gradW = kern.grad(rij, r);  // grad_i W_ij; grad_j W_ji = -grad_i W_ij
@@ -37,8 +41,8 @@ struct StressForcePass {
       Vec<D> t = sigma_i * g_ij;
       if (mats.is_elastic(s.material[j])) {
         const Vec<D> g_ji = corrected_gradient(s, j, W, gradW * Real(-1));
-        t -= s.stress[j] * g_ji;
-        if (traction) t += (g_ij - g_ji) * p_i;
+        t -= (s.piola ? s.piola[j] : s.stress[j]) * g_ji;
+        if (traction) t += area * (g_ij - g_ji) * p_i;
       }
       f += t * (s.m[j] / s.rho[j]);
     });
@@ -48,14 +52,16 @@ struct StressForcePass {
   }
 };
 
-// Elastic energy V_i sigma_i : eps_i / 2 of the stress form.
+// Elastic energy V_i S(E_i) : E_i / 2 of the stress form (small strain: S = sigma, E = eps).
 template <int D>
 struct StrainEnergyOf {
   ParticleView<D> s;
   MaterialTable<D> mats;
   PSPH_HD Real operator()(int i) const {
-    if (!mats.is_elastic(s.material[i])) return Real(0);
-    return s.m[i] / s.rho[i] * half_contraction(s.stress[i], s.strain[i]);
+    const int mi = s.material[i];
+    if (!mats.is_elastic(mi)) return Real(0);
+    const Mat<D> S = small_strain_stress(s.strain[i], mats[mi].bulk_modulus, mats[mi].shear_modulus);
+    return s.m[i] / s.rho[i] * half_contraction(S, s.strain[i]);
   }
 };
 

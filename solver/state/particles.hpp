@@ -49,6 +49,9 @@ struct ParticleView {
   Real* p_ambient;              // the fluid's pressure carried into an elastic body's surface layer
   // Rigid bodies only (null otherwise): rigid/.
   std::int32_t* body;  // the rigid body a particle belongs to, -1 if none
+  // Large-strain solids only (null otherwise): solid/constitutive.hpp.
+  Mat<D>* piola;    // first Piola-Kirchhoff stress P = F S
+  Mat<D>* defgrad;  // deformation gradient F
   // Loaded elastic particles only (null otherwise): solid/solid_load.hpp.
   std::int32_t* load_mask;  // the [[solid_load]]s a particle belongs to, bit g for load g
 };
@@ -93,7 +96,8 @@ class ParticleState {
                            colour.data(), colour_gradient.data(), curvature.data(), x0.data(), u.data(),
                            strain.data(), stress.data(), shepard.data(), shepard_grad.data(), kcorr.data(),
                            mirror.data(), index_of_id.data(), visc_scale.data(),
-                           fluid_contact.data(), p_ambient.data(), body.data(), load_mask.data()};
+                           fluid_contact.data(), p_ambient.data(), body.data(), piola.data(), defgrad.data(),
+                           load_mask.data()};
   }
 
   // Allocates and registers the interface fields (a case with two fluids and surface tension).
@@ -138,6 +142,14 @@ class ParticleState {
     reg(body, FieldType::Int, 1, "rigid_body", "-", "the rigid body a particle belongs to, -1 if none");
   }
 
+  // Large strain (Saint Venant-Kirchhoff): the Piola stress and deformation gradient of the strain
+  // pass, recomputed every step: not registered.
+  void enable_large_strain() {
+    piola.resize(n_);
+    piola.zero();
+    defgrad.upload(std::vector<Mat<D>>(n_, Mat<D>::identity()));  // undeformed until the first strain pass
+  }
+
   // Registers each particle's [[solid_load]]s, bit g for load g (solid/solid_load.hpp).
   void enable_solid_loads(const std::vector<std::int32_t>& group_of_particle) {
     load_mask.upload(group_of_particle);
@@ -165,6 +177,7 @@ class ParticleState {
   DeviceArray<std::int32_t, B> index_of_id;  // not registered: recomputed after every reordering
   DeviceArray<std::int32_t, B> body;         // empty unless enable_rigid()
   DeviceArray<std::int32_t, B> load_mask;   // empty unless enable_solid_loads()
+  DeviceArray<Mat<D>, B> piola, defgrad;     // empty unless enable_large_strain()
   DeviceArray<Real, B> visc_scale, p_ambient;  // empty unless enable_coupling()
   DeviceArray<std::uint8_t, B> fluid_contact;
 

@@ -14,12 +14,13 @@ namespace psph {
 
 constexpr const char* kFile = "cases/elastic_cube_3d.toml";
 
-Case elastic_cube_case(double spacing, SolidCoupling coupling, double background_pressure) {
+Case elastic_cube_case(double spacing, SolidCoupling coupling, double background_pressure, SolidModel model) {
   toml::table tbl = toml::parse(embedded_case_text("elastic_cube_3d"), std::string_view(kFile));
   if (spacing > 0) set_case_spacing(tbl, spacing);  // the same box and cube, more particles
   if (coupling != SolidCoupling::Traction)
     tbl["solid"].as_table()->insert_or_assign("coupling", coupling == SolidCoupling::Pair ? "pair" : "pair_eos");
   if (background_pressure > 0) tbl["solver"].as_table()->insert_or_assign("background_pressure", background_pressure);
+  if (model == SolidModel::SaintVenantKirchhoff) tbl["solid"].as_table()->insert_or_assign("model", "saint_venant_kirchhoff");
   Case c = parse_case(tbl, kFile);
   build_particles(c);
   return c;

@@ -13,8 +13,13 @@ namespace psph {
 
 // `spacing` > 0 replaces the case's (support and sizes keep their ratios to it);
 // `background_pressure` > 0 replaces the load.
+// `model` chooses the solid's law (small strain or Saint Venant-Kirchhoff).
 Case elastic_cube_case(double spacing = 0, SolidCoupling coupling = SolidCoupling::Traction,
-                       double background_pressure = 0);
+                       double background_pressure = 0, SolidModel model = SolidModel::Linear);
+
+// The fluid pressure that holds a Saint Venant-Kirchhoff solid of bulk modulus k at the uniform
+// stretch lambda: sigma = P F^T / J = 3 k (lambda^2 - 1) / (2 lambda) I, p = -sigma.
+inline double svk_pressure(double k, double lambda) { return -3 * k * (lambda * lambda - 1) / (2 * lambda); }
 
 struct CubeCompression {
   double bulk_modulus = 0;        // measured -p / (dV/V) (Pa)
