@@ -71,7 +71,8 @@ std::vector<StabilityRecord> stability_sweep(const std::string& backend, bool qu
                                        {"dam_break_3d", quick ? 0.3 : 1.0, true},
                                        {"laplace_bubble_2d", quick ? 0.05 : 0.1, false},
                                        {"drainage_2d", quick ? 0.02 : 0.05, false},
-                                       {"elastic_cube_3d", quick ? 0.002 : 0.01, false}};
+                                       {"elastic_cube_3d", quick ? 0.002 : 0.01, false},
+                                       {"settling_cylinder_2d", quick ? 0.05 : 0.3, false}};
   const std::vector<double> factors = quick ? std::vector<double>{1, 2, 4} : std::vector<double>{1, 1.5, 2, 2.5, 3, 3.5, 4};
   const std::vector<double> all_jitters = quick ? std::vector<double>{0, 0.2} : std::vector<double>{0, 0.1, 0.2};
   std::vector<StabilityRecord> out;
@@ -88,14 +89,16 @@ std::vector<StabilityRecord> stability_sweep(const std::string& backend, bool qu
       }
   }
   // Elastic solids: the cantilever plate vibrating in its first mode (tip speed 1e-3 c_P) for a
-  // fifth of a period, in each formulation.
+  // fifth of a period, in each formulation and law.
   if (wanted("oscillating_plate_2d"))
-    for (SolidFormulation form : {SolidFormulation::Stress, SolidFormulation::Displacement})
+    for (int variant = 0; variant < 3; ++variant)
       for (double f : factors) {
-        Case c = oscillating_plate_case(0.001, 0, form);
+        Case c = oscillating_plate_case(0.001, 0, variant == 1 ? SolidFormulation::Displacement : SolidFormulation::Stress);
+        if (variant == 2) c.scene.options.solid_model = SolidModel::SaintVenantKirchhoff;
         c.scene.options.dt_factor = f;
-        const char* name = form == SolidFormulation::Stress ? "oscillating_plate_2d (stress)"
-                                                            : "oscillating_plate_2d (displacement)";
+        const char* name = variant == 0   ? "oscillating_plate_2d (stress)"
+                           : variant == 1 ? "oscillating_plate_2d (displacement)"
+                                          : "oscillating_plate_2d (stress, Saint Venant-Kirchhoff)";
         out.push_back(run_one(name, c, 0.0, quick ? 0.01 : 0.05, Criterion::Energy, backend, log));
       }
   return out;

@@ -22,11 +22,11 @@ struct GradientCorrection {
   // Shepard-normalised kernel value.
   PSPH_HD Real kernel(Real W) const { return W / shepard; }
   // Exact gradient of the Shepard kernel (eq. 2.61a).
-  PSPH_HD Vec<D> shepard_gradient(Real W, const Vec<D>& gradW) const {
+  PSPH_HD PSPH_PAIR Vec<D> shepard_gradient(Real W, const Vec<D>& gradW) const {
     return (gradW * shepard - grad_sum * W) * (Real(1) / (shepard * shepard));
   }
   // Mixed kernel and gradient correction (eq. 2.63b).
-  PSPH_HD Vec<D> gradient(Real W, const Vec<D>& gradW) const { return K * shepard_gradient(W, gradW); }
+  PSPH_HD PSPH_PAIR Vec<D> gradient(Real W, const Vec<D>& gradW) const { return K * shepard_gradient(W, gradW); }
 };
 
 // NB is any neighbour provider with for_each(i, f(j, r_ij, r)) (cell view or list).

@@ -47,7 +47,7 @@ struct Kernel {
   }
 
   // Unit-support polynomial f(q) and its derivative f'(q), q in [0, 1).
-  PSPH_HD static Real f(KernelType t, Real q) {
+  PSPH_HD PSPH_PAIR static Real f(KernelType t, Real q) {
     if (q >= Real(1)) return 0;
     switch (t) {
       case KernelType::CubicSpline: {  // M4 spline: 1 - 6q^2 + 6q^3 (q<1/2), 2(1-q)^3
@@ -95,7 +95,7 @@ struct Kernel {
   }
 
   // f'(q)/q, finite at q = 0, without a division where the polynomial allows it.
-  PSPH_HD static Real df_over_q(KernelType t, Real q) {
+  PSPH_HD PSPH_PAIR static Real df_over_q(KernelType t, Real q) {
     if (q >= Real(1)) return 0;
     switch (t) {
       case KernelType::CubicSpline: {
@@ -113,13 +113,13 @@ struct Kernel {
     return 0;
   }
 
-  PSPH_HD Real W(Real r) const { return norm * f(type, r * inv_support); }
+  PSPH_HD PSPH_PAIR Real W(Real r) const { return norm * f(type, r * inv_support); }
   // dW/dr (<= 0).
   PSPH_HD Real dWdr(Real r) const { return norm * inv_support * df(type, r * inv_support); }
   // F(r) = (1/r) dW/dr, so that grad_i W_ij = r_ij F(r) with r_ij = x_i - x_j (Pazdniakou eq. 46,
   // Deptulski eq. 2.36). The pair passes use it: one division less per pair.
-  PSPH_HD Real F(Real r) const { return norm * inv_support * inv_support * df_over_q(type, r * inv_support); }
-  PSPH_HD Vec<D> grad(const Vec<D>& rij, Real r) const { return r > Real(0) ? rij * F(r) : Vec<D>::zero(); }
+  PSPH_HD PSPH_PAIR Real F(Real r) const { return norm * inv_support * inv_support * df_over_q(type, r * inv_support); }
+  PSPH_HD PSPH_PAIR Vec<D> grad(const Vec<D>& rij, Real r) const { return r > Real(0) ? rij * F(r) : Vec<D>::zero(); }
 };
 
 }  // namespace psph

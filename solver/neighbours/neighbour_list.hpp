@@ -24,18 +24,18 @@ struct NeighbourList {
   Real support2;           // R^2: listed pairs beyond the support are skipped
 
   template <class F>
-  PSPH_HD void for_each(int i, F&& f) const {
+  PSPH_HD PSPH_PAIR void for_each(int i, F&& f) const {
     visit(i, 0, count[i], f);
   }
   template <class F>
-  PSPH_HD void for_each_fluid(int i, F&& f) const {
+  PSPH_HD PSPH_PAIR void for_each_fluid(int i, F&& f) const {
     visit(i, 0, fluid_count[i], f);
   }
   PSPH_HD bool lists_non_fluid(int i) const { return count[i] > fluid_count[i]; }
 
  private:
   template <class F>
-  PSPH_HD void visit(int i, int begin, int end, F& f) const {
+  PSPH_HD PSPH_PAIR void visit(int i, int begin, int end, F& f) const {
     const Vec<D> xi = x[i];
     const int* row = index + i * stride_i;
     for (int k = begin; k < end; ++k) {

@@ -63,7 +63,7 @@ struct StrainStressPass {
 
 // g_ij = K_i grad W~_ij from particle i's stored correction (eq. 2.63b with 2.61a).
 template <int D>
-PSPH_HD inline Vec<D> corrected_gradient(const ParticleView<D>& s, int i, Real W, const Vec<D>& gradW) {
+PSPH_HD PSPH_PAIR inline Vec<D> corrected_gradient(const ParticleView<D>& s, int i, Real W, const Vec<D>& gradW) {
   GradientCorrection<D> c;
   c.shepard = s.shepard[i], c.grad_sum = s.shepard_grad[i], c.K = s.kcorr[i];
   return c.gradient(W, gradW);
