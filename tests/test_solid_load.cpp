@@ -153,3 +153,43 @@ duration = 5.0e-3
                  "solid_load[0].material");
   expect_refused(rod, "velocity = [0.01]", "velocity = [0.01]\nramp = 1.0", "solid_load[0].ramp");
 }
+
+// A rigid inclusion in the confined block (Pazdniakou §5.2.4: it meets the clay by contact only):
+// the clay closes on it and the contact carries load, so the block compresses less than without
+// it; the inclusion stays centred and takes no net force.
+TEST(SolidLoad, ARigidInclusionStiffensAConfinedBlock) {
+  auto fitted_strain = [](Engine& e, bool with_disc) {
+    const auto x0 = e.field("reference_position"), u = e.field("displacement"), m = e.field("material");
+    double num = 0, den = 0;
+    for (int i = 0; i < e.particles(); ++i) {
+      if (with_disc && m[i] != 0) continue;  // clay only (materials: clay, grain)
+      for (int k = 0; k < 2; ++k) {
+        const double r = x0[2 * i + k] - 0.01;
+        num += u[2 * i + k] * r, den += r * r;
+      }
+    }
+    return num / den;
+  };
+  auto plain = engine_of(kConfined);
+  plain->run_until(0.01);
+  const double without = fitted_strain(*plain, false);
+  const std::string with_disc = psph::test::replaced(kConfined + R"(
+[[geometry]]
+shape = "sphere"
+center = [0.01, 0.01]
+radius = 0.004
+material = "grain"
+)", "[solid]", R"([materials.grain]
+kind = "rigid"
+density = 2650.0
+[solid])");
+  auto e = engine_of(with_disc);
+  e->run_until(0.01);
+  const double with = fitted_strain(*e, true);
+  const RigidBodyState b = e->rigid_bodies().at(0);
+  std::printf("fitted strain of the confined block: %.4e without, %.4e with a rigid disc\n", without, with);
+  EXPECT_LT(std::fabs(with), 0.95 * std::fabs(without));
+  EXPECT_NEAR(b.centre[0], 0.01, 1e-9);
+  EXPECT_NEAR(b.centre[1], 0.01, 1e-9);
+  EXPECT_LT(std::hypot(b.velocity[0], b.velocity[1]), 1e-9);
+}
