@@ -12,8 +12,11 @@
 
 namespace psph {
 
-Case rigid_case(const std::string& name) {
-  Case c = load_case_text(embedded_case_text(name), "cases/" + name + ".toml");
+Case rigid_case(const std::string& name, double spacing) {
+  const std::string file = "cases/" + name + ".toml";
+  toml::table tbl = toml::parse(embedded_case_text(name), std::string_view(file));
+  if (spacing > 0) set_case_spacing(tbl, spacing);
+  Case c = parse_case(tbl, file);
   build_particles(c);
   return c;
 }

@@ -11,7 +11,8 @@
 
 namespace psph {
 
-Case rigid_case(const std::string& name);
+// The embedded case `name`; `spacing` > 0 replaces its spacing (sizes and support keep their ratios).
+Case rigid_case(const std::string& name, double spacing = 0);
 
 struct TopTrajectory {
   double position_error = 0;   // max over particles and samples of |x - x_exact| / the body's length
