@@ -159,3 +159,25 @@ TEST(FluidSolid, ClampsHoldWithAFluidInTheCase) {
   EXPECT_NEAR(wet.beta2, dry.beta2, 1e-4 * dry.beta2);  // the water only changes the steps a little
   EXPECT_LT(wet.energy_drift, 0.01);
 }
+
+// An imposed velocity holds against the fluid's forces: the loads act after every other force.
+TEST(FluidSolid, ImposedVelocityHoldsInWater) {
+  const std::string text = kBlock + R"(
+[[solid_load]]
+material = "clay"
+lower = [0.005, 0.005]
+upper = [0.0061, 0.011]
+velocity = [0.02, -0.01]
+)";
+  auto e = engine_of(text);
+  for (int s = 0; s < 50; ++s) e->step(1.0);
+  const auto v = e->field("velocity"), g = e->field("solid_load_mask");
+  int held = 0;
+  for (int i = 0; i < e->particles(); ++i)
+    if (g[i] == 1) {
+      EXPECT_EQ(v[2 * i], 0.02);
+      EXPECT_EQ(v[2 * i + 1], -0.01);
+      ++held;
+    }
+  EXPECT_EQ(held, 6);
+}

@@ -85,6 +85,11 @@ TEST(Rigid, CaseKeys) {
   expect_refused(kPair, "velocity = [0.1, 0.0]", "velocity = [0.1, 0.0]\nangular_velocity = [1.0, 2.0]",
                  "geometry[0].angular_velocity");
   expect_refused(kPair, "upper = [0.008, 0.012]", "upper = [0.0042, 0.0082]", "geometry[0]: this rigid body holds no particle");
+  expect_refused(kPair, "upper = [0.008, 0.012]", "upper = [0.005, 0.009]", "geometry[0]: this rigid body's 1 particles");
+  expect_refused(kPair, "shape = \"box\"\nlower = [0.004, 0.008]\nupper = [0.008, 0.012]",
+                 "shape = \"grain_pack\"\nlower = [0.004, 0.008]\nupper = [0.008, 0.012]\ngrain_radius = 0.0005\nmin_gap = 0.0\n"
+                 "solid_fraction = 0.05",
+                 "geometry[0].material");
   // With a fluid: its explicit viscous force is what the body takes.
   const std::string wet = replaced(kPair, "[time]", R"([materials.water]
 kind = "fluid"

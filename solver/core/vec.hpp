@@ -139,11 +139,9 @@ PSPH_HD inline bool invert(const Mat<D>& m, Mat<D>& out, Real tiny) {
     out.a[1][0] = -m.a[1][0] * inv;
     out.a[1][1] = m.a[0][0] * inv;
   } else {
+    const Mat<D> c = cofactor(m);  // m^-1 = cof(m)^T / det
     for (int r = 0; r < 3; ++r)
-      for (int s = 0; s < 3; ++s) {
-        const int r1 = (s + 1) % 3, r2 = (s + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
-        out.a[r][s] = (m.a[r1][c1] * m.a[r2][c2] - m.a[r1][c2] * m.a[r2][c1]) * inv;
-      }
+      for (int s = 0; s < 3; ++s) out.a[r][s] = c.a[s][r] * inv;
   }
   return true;
 }

@@ -182,18 +182,19 @@ class Simulation final : public Engine {
         differs("size of field '" + f.info.name + "'", std::to_string(f.element_bytes * n_) + " bytes",
                 std::to_string(cf->bytes.size()) + " bytes");
     }
+    if (c.rigid_bodies.size() != rigid_.pack().size())
+      differs("rigid bodies' state", std::to_string(rigid_.pack().size()) + " values",
+              std::to_string(c.rigid_bodies.size()) + " values");
     for (const auto& f : s_.fields().all())
       for (const auto& g : c.fields)
         if (g.name == f.info.name) f.from_host_bytes(g.bytes);
+    if (has_rigid_) rigid_.unpack(c.rigid_bodies);
     t_ = c.time, dt_ = c.last_dt, dt_first_ = c.first_dt, steps_ = c.steps;
     dissipated_ = c.dissipated_energy;
     strain_step_ = -1;
     ramp_body_forces(t_);
     build_neighbours();
-    if (has_rigid_) {
-      rigid_.unpack(c.rigid_bodies);
-      rigid_.sum_loads(s_.view());  // the accelerations are the checkpoint's
-    }
+    if (has_rigid_) rigid_.sum_loads(s_.view());  // the accelerations are the checkpoint's
   }
 
   StepStats stats() override {
@@ -241,7 +242,6 @@ class Simulation final : public Engine {
       drift(dt);
       evaluate();
       kick(0.5 * dt);
-      if (has_rigid_) rigid_.place(s_.view(), grid_);  // the bodies' particles take the kick's velocity
     } else {
       // Leapfrog (eq. 48): v(t+dt/2) = v(t-dt/2) + dt a(t), x(t+dt) = x(t) + dt v_hat(t+dt/2).
       kick(dt);
@@ -261,7 +261,9 @@ class Simulation final : public Engine {
   bool has_solids() const { return has_elastic_ || has_rigid_; }
   void kick(double h) {
     B::for_each(n_, KickPass<D>{s_.view(), mats_, Real(h)});
-    if (has_rigid_) rigid_.kick(h);
+    if (!has_rigid_) return;
+    rigid_.kick(h);
+    rigid_.place(s_.view(), grid_);  // the bodies' particles take the kick's velocity
   }
   void drift(double dt) {
     B::for_each(n_, DriftPass<D>{s_.view(), grid_, Real(dt), continuity()});
@@ -402,6 +404,8 @@ class Simulation final : public Engine {
     if (has_fluid_ && has_solids())
       B::for_each(n_, FluidOnSolidPass<D>{view_nb(), kern_, s_.view(), mats_, fluid_force_options(),
                                           opt_.solid_coupling != SolidCoupling::Traction});
+    // Last, so that an imposed velocity overrides every force on its particles.
+    if (!solid_loads_.empty()) B::for_each(n_, SolidLoadPass<D>{s_.view(), solid_loads_at(force_time_)});
     if (has_rigid_) rigid_.sum_loads(s_.view());
   }
 
@@ -465,11 +469,10 @@ class Simulation final : public Engine {
       if (stress_form()) B::for_each(n_, StressForcePass<D, NB>{nb, kern_, s_.view(), mats_, zeta, traction});
       else B::for_each(n_, ElasticForcePass<D>{view_nb_reference(), kern_, s_.view(), mats_, zeta});
       if (opt_.solid_artificial_viscosity > 0 || opt_.solid_artificial_viscosity_beta > 0 || opt_.solid_xsph > 0)
-        B::for_each(n_, SolidViscosityPass<D, NB>{nb, kern_, s_.view(), mats_, Real(opt_.solid_artificial_viscosity),
+        B::for_each(n_, SolidViscosityPass<D, NB>{nb, grid_, kern_, s_.view(), mats_, Real(opt_.solid_artificial_viscosity),
                                                   Real(opt_.solid_artificial_viscosity_beta), Real(opt_.solid_xsph),
                                                   Real(smoothing_length())});
     });
-    if (!solid_loads_.empty()) B::for_each(n_, SolidLoadPass<D>{s_.view(), solid_loads_at(force_time_)});
   }
 
   // The [[solid_load]]s at time t: tractions as forces on each particle's share of the surface

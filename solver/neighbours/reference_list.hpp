@@ -23,7 +23,7 @@ struct ReferenceNeighbours {
   int capacity;
   Real support2;
   template <class F>
-  PSPH_HD void for_each(int i, F&& f) const {
+  PSPH_HD PSPH_PAIR void for_each(int i, F&& f) const {
     const int row = id[i];
     const Vec<D> xi = x0[i];
     for (int k = 0; k < count[row]; ++k) {

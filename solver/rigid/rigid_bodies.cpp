@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+// Host-side 3x3 algebra in double precision (the bodies' motion is integrated in double whatever
+// the particles' precision; core/vec.hpp's Mat works in Real).
 namespace psph {
 
 Vec3d cross(const Vec3d& a, const Vec3d& b) {

@@ -181,6 +181,9 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     if (!stress && o.solid_model == SolidModel::SaintVenantKirchhoff)
       solid.fail("model", "expected \"linear\" with formulation = \"displacement\" (Saint Venant-Kirchhoff is "
                           "written in the stress form)");
+    if (o.solid_coupling == SolidCoupling::PairEos && o.solid_model == SolidModel::SaintVenantKirchhoff)
+      solid.fail("coupling", "expected \"traction\" or \"pair\" with model = \"saint_venant_kirchhoff\" (eq. 74's "
+                             "pressure -k tr(eps) is a small-strain one)");
     const std::string cp = solid.choice("coupling", {"traction", "pair", "pair_eos"}, stress ? "traction" : "pair");
     o.solid_coupling = cp == "traction" ? SolidCoupling::Traction : cp == "pair" ? SolidCoupling::Pair : SolidCoupling::PairEos;
     if (!coupled && solid.has("coupling"))
@@ -462,6 +465,10 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       if (mname == "empty") s.material = -1;
       else if (mat_index.count(mname)) s.material = mat_index[mname];
       else r.fail("material", "expected \"empty\" or the name of a table under [materials], got \"" + mname + "\"");
+      if (s.kind == GeometryShape::Kind::GrainPack && s.material >= 0 &&
+          sc.materials[s.material].props.kind == MaterialKind::Rigid)
+        r.fail("material", "expected a box or a sphere for a rigid material (each geometry is one rigid body: a "
+                           "grain pack would move as one clump)");
       s.velocity = r.vec<double>("velocity", D, std::array<double, 3>{0, 0, 0});
       // A rigid body's initial angular velocity (rad/s) about its centre of mass: a number in 2D
       // (about z), a vector in 3D.

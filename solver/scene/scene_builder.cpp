@@ -136,6 +136,20 @@ void build_particles(Case& c) {
     if (body_of_geometry[g] >= 0 && body_count[body_of_geometry[g]] == 0)
       throw CaseError(c.file + ": geometry[" + std::to_string(g) +
                       "]: this rigid body holds no particle (later geometries cover it, or it is smaller than a spacing)");
+  // A body must be able to turn: in 2D a moment of inertia about z, in 3D a regular inertia tensor
+  // (not a single particle, not a line of them).
+  const SceneRigidBodies rb = rigid_bodies_of(sc);
+  for (std::size_t g = 0; g < c.geometry.size(); ++g) {
+    const int b = body_of_geometry[g];
+    if (b < 0 || D == 1) continue;
+    const Mat3d& I = rb.state[b].inertia0;
+    const double det = I[0] * (I[4] * I[8] - I[5] * I[7]) - I[1] * (I[3] * I[8] - I[5] * I[6]) + I[2] * (I[3] * I[7] - I[4] * I[6]);
+    const double scale = rb.state[b].mass * dx * dx;
+    if (D == 2 ? !(I[8] > 1e-9 * scale) : !(det > 1e-9 * scale * scale * scale))
+      throw CaseError(c.file + ": geometry[" + std::to_string(g) + "]: this rigid body's " +
+                      std::to_string(body_count[b]) + " particles " + (D == 2 ? "have no moment of inertia" : "lie on a line") +
+                      "; expected a body at least two spacings across");
+  }
   add_rigid_rotation(sc);
   // Each [[solid_load]] takes the particles of its material inside its box.
   sc.load_mask.assign(sc.material.size(), 0);

@@ -1,7 +1,8 @@
 #pragma once
 // Monaghan artificial viscosity and XSPH for elastic solids (Deptulski 2021 eqs. 2.64-2.66, his
 // choice for the Dyka bar: alpha = 0.2, beta = 0.4, epsilon = 0.5; `[solid]` keys), over the
-// elastic neighbours in the reference configuration:
+// elastic neighbours of the reference configuration with their current separations (a rigid
+// rotation is then not damped, also in large strain):
 //   a_i += -sum_j m_j Pi_ij grad_i W_ij,  Pi_ij = (alpha c nu_ij + beta nu_ij^2) / rho_ij > 0 for
 //   approaching pairs (0 otherwise), nu_ij = -h_s (v_ij . r_ij) / (r_ij^2 + 0.01 h_s^2)   (eqs. 2.64-2.65,
 //   written with the sign that makes the force repulsive);
@@ -18,7 +19,8 @@ namespace psph {
 
 template <int D, class NB = NeighbourList<D>>
 struct SolidViscosityPass {
-  NB nb;  // reference positions
+  NB nb;  // the solid's pairs
+  CellGrid<D> grid;
   Kernel<D> kern;
   ParticleView<D> s;
   MaterialTable<D> mats;
@@ -28,9 +30,11 @@ struct SolidViscosityPass {
     if (!mats.is_elastic(mi)) return;
     const Real h = smoothing_length, c_i = mats[mi].sound_speed;
     Vec<D> a = Vec<D>::zero(), xs = Vec<D>::zero();
-    nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
+    nb.for_each(i, [&](int j, const Vec<D>&, Real) PSPH_PAIR {
       const int mj = s.material[j];
-      if (!(r > Real(0)) || !mats.is_elastic(mj)) return;
+      const Vec<D> rij = grid.separation(s.x[i], s.x[j]);
+      const Real r = norm(rij);
+      if (!(r > Real(0)) || r >= kern.support || !mats.is_elastic(mj)) return;
       const Vec<D> vij = s.v[i] - s.v[j];
       const Real vr = dot(vij, rij), rho_ij = Real(0.5) * (s.rho[i] + s.rho[j]);
       if (vr < Real(0)) {

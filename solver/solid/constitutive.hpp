@@ -36,8 +36,8 @@ PSPH_HD inline Mat<D> small_strain_stress(const Mat<D>& eps, Real k, Real mu, Re
 
 // Saint Venant-Kirchhoff (Deptulski 2021 §2.4.1, digest §2.8.1): from H = grad u in the reference
 // configuration, F = I + H, the Green-Lagrange strain E = (H + H^T + H^T H) / 2, the second
-// Piola-Kirchhoff stress S = k tr(E) I + 2 mu dev(E) (the small-strain law applied to E, damage
-// included), the first P = F S, and the Cauchy stress sigma = P F^T / det F (for output and
+// Piola-Kirchhoff stress S = k tr(E) I + 2 mu dev(E) (the small-strain law applied to E, with its
+// damage argument), the first P = F S, and the Cauchy stress sigma = P F^T / det F (for output and
 // damage criteria).
 template <int D>
 struct LargeStrain {

@@ -6,7 +6,7 @@
 //   velocity: the particles move at an imposed velocity (an imposed displacement v x duration,
 //             then held): they still take part in the solid's sums (Deptulski digest O-N6).
 // A particle may belong to several loads (a corner to two faces' tractions): a bit per load.
-// Applied after the solid's own forces (solid/stress_form.hpp, elastic_force.hpp).
+// Applied after every other force (engine/simulation.hpp), so that an imposed velocity holds.
 #include <cstdint>
 
 #include "fluid/material.hpp"
@@ -39,6 +39,7 @@ struct SolidLoadPass {
       if ((mask & (1 << g)) && loads.kind[g] == SolidLoadKind::Velocity) {
         s.v[i] = loads.value[g];
         s.a[i] = Vec<D>::zero();
+        s.v_xsph[i] = Vec<D>::zero();
       }
   }
 };

@@ -121,7 +121,7 @@ class ParticleState {
     u.zero(), strain.zero(), stress.zero();
     reg(x0, FieldType::Real, D, "reference_position", "m", "initial position (small-strain reference configuration)");
     reg(u, FieldType::Real, D, "displacement", "m", "displacement x - x0 of elastic solids");
-    reg(strain, FieldType::Real, D * D, "strain", "-", "small strain sym(grad u), row-major");
+    reg(strain, FieldType::Real, D * D, "strain", "-", "small strain sym(grad u) (large strain: Green-Lagrange), row-major");
     reg(stress, FieldType::Real, D * D, "stress", "Pa", "Cauchy stress (tension positive), row-major");
     reg(mirror, FieldType::Int, 1, "clamp_mirror", "-", "id of a clamp wall's mirror partner and back, -1 if none");
   }
@@ -142,12 +142,14 @@ class ParticleState {
     reg(body, FieldType::Int, 1, "rigid_body", "-", "the rigid body a particle belongs to, -1 if none");
   }
 
-  // Large strain (Saint Venant-Kirchhoff): the Piola stress and deformation gradient of the strain
-  // pass, recomputed every step: not registered.
+  // Large strain (Saint Venant-Kirchhoff): the Piola stress of the strain pass (recomputed before
+  // every use: not registered) and the deformation gradient (registered: the fluid reads a solid's
+  // volume det F before the next strain pass, so it must follow reorderings and checkpoints).
   void enable_large_strain() {
     piola.resize(n_);
     piola.zero();
     defgrad.upload(std::vector<Mat<D>>(n_, Mat<D>::identity()));  // undeformed until the first strain pass
+    reg(defgrad, FieldType::Real, D * D, "deformation_gradient", "-", "F = I + grad u (large strain), row-major");
   }
 
   // Registers each particle's [[solid_load]]s, bit g for load g (solid/solid_load.hpp).
