@@ -24,6 +24,31 @@ Case built(const std::string& text) {
 
 bool is_wall(const Scene& sc, int i) { return sc.materials[sc.material[i]].props.kind == MaterialKind::Wall; }
 
+// A free 2D block of 20 x 20 spacings of clay in an empty box.
+const std::string kFreeBlock = R"(
+[case]
+name = "block"
+dimension = 2
+[domain]
+lower = [-0.2, -0.2]
+upper = [0.2, 0.2]
+[discretisation]
+spacing = 0.01
+support_radius = 0.02
+[materials.clay]
+kind = "elastic"
+density = 2000.0
+young_modulus = 1.0e6
+poisson_ratio = 0.1
+[time]
+end = 1.0
+[[geometry]]
+shape = "box"
+lower = [-0.1, -0.1]
+upper = [0.1, 0.1]
+material = "clay"
+)";
+
 }  // namespace
 
 // Every wall within a support of the rod mirrors the particle at its image through the clamp plane
@@ -79,29 +104,7 @@ TEST(StressForm, ClampWallsMirrorTheirImageInThePlate) {
 // (sym grad u = 0 to first order), also on its free surfaces, so almost no energy leaves the
 // rotation; the displacement form's transverse pair term resists it where the support is truncated.
 TEST(StressForm, ARigidRotationOfAFreeBlockCostsNoEnergy) {
-  const std::string text = R"(
-[case]
-name = "block"
-dimension = 2
-[domain]
-lower = [-0.2, -0.2]
-upper = [0.2, 0.2]
-[discretisation]
-spacing = 0.01
-support_radius = 0.02
-[materials.clay]
-kind = "elastic"
-density = 2000.0
-young_modulus = 1.0e6
-poisson_ratio = 0.1
-[time]
-end = 1.0
-[[geometry]]
-shape = "box"
-lower = [-0.1, -0.1]
-upper = [0.1, 0.1]
-material = "clay"
-)";
+  const std::string text = kFreeBlock;
   std::map<SolidFormulation, double> share;
   for (SolidFormulation form : {SolidFormulation::Stress, SolidFormulation::Displacement}) {
     Case c = built(text);
@@ -124,33 +127,11 @@ material = "clay"
 // squeezed by its initial velocity keeps its momentum exactly, and the viscosity takes energy from
 // it step by step (the kinetic + elastic energy never rises); without them the energy is kept.
 TEST(StressForm, ArtificialViscosityKeepsMomentumAndTakesEnergy) {
-  const std::string text = R"(
-[case]
-name = "block"
-dimension = 2
-[domain]
-lower = [-0.2, -0.2]
-upper = [0.2, 0.2]
-[discretisation]
-spacing = 0.01
-support_radius = 0.02
-[materials.clay]
-kind = "elastic"
-density = 2000.0
-young_modulus = 1.0e6
-poisson_ratio = 0.1
-[solid]
+  const std::string text = replaced(replaced(kFreeBlock, "[time]", R"([solid]
 artificial_viscosity = 1.0
 artificial_viscosity_beta = 2.0
 xsph = 0.5
-[time]
-end = 1.0
-[[geometry]]
-shape = "box"
-lower = [-0.1, -0.1]
-upper = [0.1, 0.12]
-material = "clay"
-)";
+[time])"), "upper = [0.1, 0.1]", "upper = [0.1, 0.12]");
   auto energy_after = [&](const std::string& t, double& momentum_error) {
     Case c = built(t);
     for (int i = 0; i < c.scene.count(); ++i)  // squeezed along x, drifting along y
@@ -191,31 +172,10 @@ material = "clay"
 // sqrt(1 + (omega t)^2) = 1.118 at no elastic cost. The large-strain solid keeps its neighbours of
 // t = 0 all along (neighbours/reference_list.hpp).
 TEST(StressForm, SaintVenantKirchhoffIsObjectiveUnderLargeRotations) {
-  const std::string text = R"(
-[case]
-name = "block"
-dimension = 2
-[domain]
-lower = [-0.2, -0.2]
-upper = [0.2, 0.2]
-[discretisation]
-spacing = 0.01
-support_radius = 0.02
-[materials.clay]
-kind = "elastic"
-density = 2000.0
-young_modulus = 1.0e6
-poisson_ratio = 0.3
-[solid]
-model = "saint_venant_kirchhoff"
-[time]
-end = 1.0
-[[geometry]]
-shape = "box"
-lower = [-0.1, -0.05]
-upper = [0.1, 0.05]
-material = "clay"
-)";
+  const std::string text = replaced(replaced(replaced(replaced(kFreeBlock, "poisson_ratio = 0.1", "poisson_ratio = 0.3"), "[time]",
+                                                              "[solid]\nmodel = \"saint_venant_kirchhoff\"\n[time]"),
+                                             "lower = [-0.1, -0.1]", "lower = [-0.1, -0.05]"),
+                                    "upper = [0.1, 0.1]", "upper = [0.1, 0.05]");
   std::map<SolidModel, double> lo, hi;  // the range of |x| / |x0| over particles away from the centre
   double turned = 0;
   for (SolidModel model : {SolidModel::SaintVenantKirchhoff, SolidModel::Linear}) {

@@ -485,7 +485,7 @@ class Simulation final : public Engine {
       const SceneSolidLoad& sl = solid_loads_[g];
       l.kind[g] = sl.velocity ? SolidLoadKind::Velocity : SolidLoadKind::Traction;
       const double f = sl.velocity ? (sl.duration > 0 && t > sl.duration ? 0.0 : 1.0)
-                                   : area * (sl.ramp_time > 0 && t < sl.ramp_time ? t / sl.ramp_time : 1.0);
+                                   : area * ramp_factor(t, sl.ramp_time);
       for (int d = 0; d < D; ++d) l.value[g][d] = Real(f * sl.value[d]);
     }
     return l;
@@ -515,16 +515,18 @@ class Simulation final : public Engine {
     B::for_each(n_, SetFluidVelocity<D>{visc_x_.data(), v, mats_});
   }
 
-  // Neighbours, density (or EOS after continuity), forces at the new positions.
-  // Body-force regions at time t, each scaled by min(1, t / ramp_time): a drive applied quasi-statically.
+  // min(1, t / ramp_time): a load applied quasi-statically (1 without a ramp).
+  static double ramp_factor(double t, double ramp_time) { return ramp_time > 0 && t < ramp_time ? t / ramp_time : 1.0; }
+  // Body-force regions at time t, each scaled by its ramp factor.
   void ramp_body_forces(double t) {
     force_time_ = t;
     for (int r = 0; r < mats_.region_count; ++r) {
-      const double ramp = regions_[r].ramp_time, f = ramp > 0 && t < ramp ? t / ramp : 1.0;
+      const double f = ramp_factor(t, regions_[r].ramp_time);
       for (int d = 0; d < D; ++d) mats_.region[r].acceleration[d] = Real(f * regions_[r].acceleration[d]);
     }
   }
 
+  // Neighbours, density (or EOS after continuity), forces at the new positions.
   void evaluate() {
     if (lists_expired()) build_neighbours();
     if (has_elastic_) solid_strain();  // before the fluid's sums, which read the solid's volumes

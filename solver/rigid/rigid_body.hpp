@@ -13,19 +13,24 @@
 
 namespace psph {
 
+// a x b for vectors of D <= 3 components lifted to 3D (zeros beyond D; in 2D only z survives).
+template <int D>
+PSPH_HD inline void cross_lifted(const Real a[3], const Vec<D>& b_d, Real out[3]) {
+  Real b[3] = {0, 0, 0};
+  for (int d = 0; d < D; ++d) b[d] = b_d[d];
+  out[0] = a[1] * b[2] - a[2] * b[1], out[1] = a[2] * b[0] - a[0] * b[2], out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
 template <int D>
 struct RigidPose {
   Vec<D> centre, velocity;
   Mat<D> rotation;
   Real omega[3];  // world frame; in 2D only omega[2]
   PSPH_HD Vec<D> velocity_at(const Vec<D>& arm) const {  // V + omega x arm
+    Real w[3];
+    cross_lifted<D>(omega, arm, w);
     Vec<D> v = velocity;
-    if constexpr (D == 2) v[0] -= omega[2] * arm[1], v[1] += omega[2] * arm[0];
-    if constexpr (D == 3) {
-      v[0] += omega[1] * arm[2] - omega[2] * arm[1];
-      v[1] += omega[2] * arm[0] - omega[0] * arm[2];
-      v[2] += omega[0] * arm[1] - omega[1] * arm[0];
-    }
+    for (int d = 0; d < D; ++d) v[d] += w[d];
     return v;
   }
 };
@@ -68,9 +73,9 @@ struct RigidLoadOf {
     const Vec<D> f = s.a[i] * s.m[i];
     const Vec<D> r = rotation * offset[k];
     RigidLoadSum l;
-    for (int d = 0; d < D; ++d) l.f[d] = f[d];
-    if constexpr (D == 2) l.t[2] = r[0] * f[1] - r[1] * f[0];
-    if constexpr (D == 3) l.t[0] = r[1] * f[2] - r[2] * f[1], l.t[1] = r[2] * f[0] - r[0] * f[2], l.t[2] = r[0] * f[1] - r[1] * f[0];
+    for (int d = 0; d < D; ++d) l.f[d] = f[d], l.t[d] = r[d];  // the arm, lifted to 3D
+    const Real arm[3] = {l.t[0], l.t[1], l.t[2]};
+    cross_lifted<D>(arm, f, l.t);  // r x f: z only in 2D, none in 1D
     return l;
   }
 };

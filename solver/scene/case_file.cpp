@@ -45,11 +45,8 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
   const int D = sc.dimension;
   {
     CaseReader r(top.table("domain", true), file, "domain");
-    sc.lower = r.vec<double>("lower", D);
-    sc.upper = r.vec<double>("upper", D);
+    r.box(D, sc.lower, sc.upper);
     sc.periodic = r.vec<bool>("periodic", D, std::array<bool, 3>{false, false, false});
-    for (int k = 0; k < D; ++k)
-      if (!(sc.upper[k] > sc.lower[k])) r.fail("upper", "expected upper > lower on every axis (axis " + std::to_string(k) + ")");
     r.finish();
   }
   SolverOptions& o = sc.options;
@@ -235,10 +232,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       if (!mat_index.count(mname) || sc.materials[mat_index[mname]].props.kind != MaterialKind::Fluid)
         r.fail("material", "expected the name of a fluid under [materials], got \"" + mname + "\"");
       f.material = mat_index[mname];
-      f.lower = r.vec<double>("lower", D);
-      f.upper = r.vec<double>("upper", D);
-      for (int k = 0; k < D; ++k)
-        if (!(f.upper[k] > f.lower[k])) r.fail("upper", "expected upper > lower on every axis (axis " + std::to_string(k) + ")");
+      r.box(D, f.lower, f.upper);
       f.acceleration = r.vec<double>("body_force", D);
       f.ramp_time = r.non_negative("ramp_time", 0.0);
       r.finish();
@@ -259,10 +253,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       if (!mat_index.count(mname) || sc.materials[mat_index[mname]].props.kind != MaterialKind::Elastic)
         r.fail("material", "expected the name of an elastic material under [materials], got \"" + mname + "\"");
       l.material = mat_index[mname];
-      l.lower = r.vec<double>("lower", D);
-      l.upper = r.vec<double>("upper", D);
-      for (int k = 0; k < D; ++k)
-        if (!(l.upper[k] > l.lower[k])) r.fail("upper", "expected upper > lower on every axis (axis " + std::to_string(k) + ")");
+      r.box(D, l.lower, l.upper);
       if (r.has("traction") == r.has("velocity"))
         r.fail("traction", "give exactly one of traction (Pa, on each particle's share of the surface) and velocity (m/s)");
       l.velocity = r.has("velocity");
@@ -436,10 +427,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
                : shape == "grain_pack" ? GeometryShape::Kind::GrainPack : GeometryShape::Kind::Box;
       if (s.kind == GeometryShape::Kind::GrainPack) {
         GrainPackSpec& p = s.pack;
-        p.lower = r.vec<double>("lower", D);
-        p.upper = r.vec<double>("upper", D);
-        for (int k = 0; k < D; ++k)
-          if (!(p.upper[k] > p.lower[k])) r.fail("upper", "expected upper > lower on every axis (axis " + std::to_string(k) + ")");
+        r.box(D, p.lower, p.upper);
         p.grain_radius = r.positive("grain_radius");
         p.radius_spread = r.non_negative("radius_spread", 0.2);
         if (p.radius_spread >= 1) r.fail("radius_spread", "expected a fraction of the radius in [0, 1)");

@@ -102,6 +102,13 @@ class CaseReader {
     if (auto v = n->value_exact<bool>()) return *v;
     fail(key, std::string("expected true or false, got ") + type_name(*n), n);
   }
+  // A box: `lower` and `upper` (dim numbers each), upper > lower on every axis.
+  void box(int dim, std::array<double, 3>& lower, std::array<double, 3>& upper) {
+    lower = vec<double>("lower", dim);
+    upper = vec<double>("upper", dim);
+    for (int k = 0; k < dim; ++k)
+      if (!(upper[k] > lower[k])) fail("upper", "expected upper > lower on every axis (axis " + std::to_string(k) + ")");
+  }
   // An array of exactly `dim` numbers (or booleans when `T` is bool).
   template <class T>
   std::array<T, 3> vec(const std::string& key, int dim, std::optional<std::array<T, 3>> def = std::nullopt) {
