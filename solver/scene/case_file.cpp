@@ -448,7 +448,11 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
       } else {
         s.center = r.vec<double>("center", D);
         s.radius = r.positive("radius");
+        // "lattice": the domain's lattice sites inside; "concentric": shells fitted to the surface.
+        s.concentric = r.choice("layout", {"lattice", "concentric"}, "lattice") == "concentric";
       }
+      if (s.kind != GeometryShape::Kind::Sphere && r.has("layout"))
+        r.fail("layout", "expected a layout only on a sphere (boxes and grain packs take the lattice)");
       const std::string mname = r.string("material");
       if (mname == "empty") s.material = -1;
       else if (mat_index.count(mname)) s.material = mat_index[mname];

@@ -25,6 +25,7 @@ struct GeometryShape {
   std::array<double, 3> lower{0, 0, 0}, upper{0, 0, 0};  // box
   std::array<double, 3> center{0, 0, 0};                 // sphere
   double radius = 0;
+  bool concentric = false;    // sphere: layout = "concentric" (scene/concentric_layout.hpp)
   GrainPackSpec pack;         // grain pack (its box is pack.lower/upper)
   std::vector<Grain> grains;  // generated from pack when the case is read
   int material = -1;  // -1: "empty" (removes particles)

@@ -4,6 +4,7 @@
 #include <random>
 
 #include "rigid/rigid_scene.hpp"
+#include "scene/concentric_layout.hpp"
 
 namespace psph {
 namespace {
@@ -107,30 +108,49 @@ void build_particles(Case& c) {
   int idx[3] = {0, 0, 0};
   std::mt19937_64 rng(12345);  // fixed seed: the same disorder on every run
   std::uniform_real_distribution<double> jitter(-sc.options.jitter * dx, sc.options.jitter * dx);
+  // The last geometry holding x owns it (-1: none).
+  auto owner_of = [&](const double* x) {
+    int owner = -1;
+    for (std::size_t g = 0; g < c.geometry.size(); ++g)
+      if (contains(c.geometry[g], x, D)) owner = static_cast<int>(g);
+    return owner;
+  };
+  // A particle of geometry g at x standing for `volume` (a lattice site: dx^D).
+  auto add = [&](const double* x, int g, double volume) {
+    const GeometryShape& owner = c.geometry[g];
+    const SceneMaterial& m = sc.materials[owner.material];
+    const bool is_fluid = m.props.kind == MaterialKind::Fluid;
+    for (int k = 0; k < D; ++k) {
+      double xk = x[k] + (is_fluid && sc.options.jitter > 0 ? jitter(rng) : 0.0);
+      if (sc.periodic[k]) xk = xk < sc.lower[k] ? xk + (sc.upper[k] - sc.lower[k]) : xk >= sc.upper[k] ? xk - (sc.upper[k] - sc.lower[k]) : xk;
+      sc.x.push_back(xk), sc.v.push_back(owner.velocity[k]);
+    }
+    // The lattice's mass (its summed density is the rest density) in proportion to the volume.
+    sc.mass.push_back(m.props.rest_density / n_sum * volume / std::pow(dx, D));
+    sc.material.push_back(owner.material);
+    const int b = body_of_geometry[g];
+    sc.body.push_back(b);
+    if (b >= 0) ++body_count[b];
+    if (m.props.kind != MaterialKind::Wall) ++moving;
+  };
   for (long s = 0; s < total; ++s) {
     double x[3];
     for (int k = 0; k < D; ++k) x[k] = sc.lower[k] + (idx[k] + 0.5) * dx;
-    const GeometryShape* owner = nullptr;
-    int owner_index = -1;
-    for (std::size_t g = 0; g < c.geometry.size(); ++g)
-      if (contains(c.geometry[g], x, D)) owner = &c.geometry[g], owner_index = static_cast<int>(g);
-    if (owner && owner->material >= 0) {
-      const SceneMaterial& m = sc.materials[owner->material];
-      const bool is_fluid = m.props.kind == MaterialKind::Fluid;
-      for (int k = 0; k < D; ++k) {
-        double xk = x[k] + (is_fluid && sc.options.jitter > 0 ? jitter(rng) : 0.0);
-        if (sc.periodic[k]) xk = xk < sc.lower[k] ? xk + (sc.upper[k] - sc.lower[k]) : xk >= sc.upper[k] ? xk - (sc.upper[k] - sc.lower[k]) : xk;
-        sc.x.push_back(xk), sc.v.push_back(owner->velocity[k]);
-      }
-      sc.mass.push_back(m.props.rest_density / n_sum);
-      sc.material.push_back(owner->material);
-      const int b = body_of_geometry[owner_index];
-      sc.body.push_back(b);
-      if (b >= 0) ++body_count[b];
-      if (m.props.kind != MaterialKind::Wall) ++moving;
-    }
+    const int g = owner_of(x);
+    if (g >= 0 && c.geometry[g].material >= 0 && !c.geometry[g].concentric) add(x, g, std::pow(dx, D));
     int d = 0;
     while (d < D && ++idx[d] >= n[d]) idx[d++] = 0;
+  }
+  // Concentric spheres place their own points, kept where no later geometry (and the domain's
+  // edge, unless periodic) takes them.
+  for (std::size_t g = 0; g < c.geometry.size(); ++g) {
+    const GeometryShape& gs = c.geometry[g];
+    if (!gs.concentric || gs.material < 0) continue;
+    for (const LayoutPoint& p : concentric_points(gs.center, gs.radius, dx, D)) {
+      bool inside = true;
+      for (int k = 0; k < D; ++k) inside = inside && (sc.periodic[k] || (p.x[k] >= sc.lower[k] && p.x[k] < sc.upper[k]));
+      if (inside && owner_of(p.x.data()) == static_cast<int>(g)) add(p.x.data(), static_cast<int>(g), p.volume);
+    }
   }
   for (std::size_t g = 0; g < c.geometry.size(); ++g)
     if (body_of_geometry[g] >= 0 && body_count[body_of_geometry[g]] == 0)

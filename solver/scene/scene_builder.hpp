@@ -1,11 +1,12 @@
 #pragma once
 // Turns a case's geometry into particles: a regular lattice over the domain, each site given the
-// material of the last shape that contains it.
+// material of the last shape that contains it, and the shells of concentric spheres
+// (scene/concentric_layout.hpp), each point kept where that sphere is the last shape containing it.
 #include "scene/case_file.hpp"
 
 namespace psph {
 
-// Fills case.scene's particles. Throws CaseError when the geometry yields no fluid or elastic particle.
+// Fills case.scene's particles (a particle standing for volume V weighs rho0 / lattice sum * V / dx^D). Throws CaseError when the geometry yields no fluid or elastic particle.
 void build_particles(Case& c);
 
 // A periodic cube of edge `length` filled with one fluid on a lattice of `per_axis` sites per axis,

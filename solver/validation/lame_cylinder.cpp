@@ -28,11 +28,17 @@ LameComparison run_lame_cylinder(const Case& c, const std::string& backend) {
   if (sc.dimension != 2) throw std::logic_error("the Lame cylinder is a 2D case");
   const double dx = sc.options.spacing, R = sc.options.support_radius;
   auto kind = [&](int m) { return sc.materials[m].props.kind; };
-  int n_fluid = 0, n_solid = 0;
-  for (int m : sc.material) n_fluid += kind(m) == MaterialKind::Fluid, n_solid += kind(m) == MaterialKind::Elastic;
+  // Areas from the particles' volumes (scene/scene_builder.hpp): V = m n_sum dx^2 / rho0.
+  const double n_sum = lattice_kernel_sum(2, sc.options.kernel, R, dx);
+  double fluid_area = 0, solid_area = 0;
+  for (int i = 0; i < sc.count(); ++i) {
+    const int m = sc.material[i];
+    const double V = sc.mass[i] * n_sum * dx * dx / sc.materials[m].props.rest_density;
+    fluid_area += kind(m) == MaterialKind::Fluid ? V : 0, solid_area += kind(m) == MaterialKind::Elastic ? V : 0;
+  }
   LameComparison out;
-  out.inner = std::sqrt(n_fluid * dx * dx / M_PI);
-  out.outer = std::sqrt((n_fluid + n_solid) * dx * dx / M_PI);
+  out.inner = std::sqrt(fluid_area / M_PI);
+  out.outer = std::sqrt((fluid_area + solid_area) / M_PI);
   const double a = out.inner, b = out.outer;
 
   const auto t0 = std::chrono::steady_clock::now();

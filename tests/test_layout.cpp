@@ -1,0 +1,130 @@
+// Particle layouts: concentric shells tile a sphere's volume and keep particles apart; a
+// concentric ring with a concentric core of another material leaves no gap and no overlap.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "case_text.hpp"
+#include "scene/concentric_layout.hpp"
+#include "scene/scene_builder.hpp"
+
+using namespace psph;
+
+namespace {
+
+double nearest(const std::vector<double>& x, int D, int i) {
+  const int n = static_cast<int>(x.size()) / D;
+  double best = 1e300;
+  for (int j = 0; j < n; ++j) {
+    if (j == i) continue;
+    double d2 = 0;
+    for (int k = 0; k < D; ++k) d2 += (x[i * D + k] - x[j * D + k]) * (x[i * D + k] - x[j * D + k]);
+    best = std::min(best, d2);
+  }
+  return std::sqrt(best);
+}
+
+}  // namespace
+
+TEST(ConcentricLayout, ShellsTileTheBallAndKeepParticlesApart) {
+  const double ball[3] = {2 * 10.0, M_PI * 100.0, 4.0 / 3.0 * M_PI * 1000.0};  // radius 10 spacings
+  for (int D = 1; D <= 3; ++D) {
+    const std::vector<LayoutPoint> p = concentric_points({0.5, -1.0, 2.0}, 10.0, 1.0, D);
+    std::vector<double> x;
+    double volume = 0;
+    for (const LayoutPoint& q : p) {
+      volume += q.volume;
+      double r2 = 0;
+      for (int k = 0; k < D; ++k) x.push_back(q.x[k]), r2 += std::pow(q.x[k] - (k == 0 ? 0.5 : k == 1 ? -1.0 : 2.0), 2);
+      const double shell = std::sqrt(r2) - 0.5;  // radii (k + 1/2) spacings
+      EXPECT_NEAR(shell, std::round(shell), 1e-9) << "D = " << D;
+      // Every particle stands for about a spacing^D: no shell crowded or sparse.
+      EXPECT_GT(q.volume, 0.95) << "D = " << D;
+      EXPECT_LT(q.volume, 1.05) << "D = " << D;
+    }
+    EXPECT_NEAR(volume, ball[D - 1], 1e-9 * ball[D - 1]) << "D = " << D;
+    double closest = 1e300;
+    for (int i = 0; i < static_cast<int>(p.size()); ++i) closest = std::min(closest, nearest(x, D, i));
+    EXPECT_GT(closest, D == 3 ? 0.74 : 0.86) << "D = " << D;  // 3D: a Fibonacci spiral near its poles
+  }
+}
+
+namespace {
+
+const char* kRing = R"(
+[case]
+name = "ring"
+dimension = 2
+[domain]
+lower = [-0.012, -0.012]
+upper = [0.012, 0.012]
+[discretisation]
+spacing = 1.0e-3
+support_radius = 2.0e-3
+[materials.clay]
+kind = "elastic"
+density = 2000.0
+young_modulus = 1.0e6
+poisson_ratio = 0.3
+[materials.water]
+kind = "fluid"
+density = 1000.0
+viscosity = 1.0e-3
+sound_speed = 10.0
+[time]
+end = 1.0e-3
+[[geometry]]
+shape = "sphere"
+center = [0.0, 0.0]
+radius = 0.01
+material = "clay"
+layout = "concentric"
+[[geometry]]
+shape = "sphere"
+center = [0.0, 0.0]
+radius = 0.004
+material = "water"
+layout = "concentric"
+)";
+
+}  // namespace
+
+TEST(ConcentricLayout, ACoreOfAnotherMaterialFillsItsShells) {
+  Case c = load_case_text(kRing, "ring.toml");
+  build_particles(c);
+  const Scene& sc = c.scene;
+  const double n_sum = lattice_kernel_sum(2, sc.options.kernel, sc.options.support_radius, 1e-3);
+  double area[2] = {0, 0};  // clay, water (materials in alphabetical order)
+  for (int i = 0; i < sc.count(); ++i) {
+    const int m = sc.material[i];
+    const double r = std::hypot(sc.x[2 * i], sc.x[2 * i + 1]);
+    EXPECT_EQ(m, r < 0.004 ? 1 : 0) << "r = " << r;
+    area[m] += sc.mass[i] * n_sum * 1e-6 / sc.materials[m].props.rest_density;
+    EXPECT_GT(nearest(sc.x, 2, i), 0.85e-3);
+  }
+  EXPECT_NEAR(area[1], M_PI * 16e-6, 1e-12);
+  EXPECT_NEAR(area[0], M_PI * 84e-6, 1e-12);
+}
+
+TEST(ConcentricLayout, LaterShapesAndTheDomainEdgeClipIt) {
+  // A box of water over the ring's right half takes it; the domain cuts the ring's top.
+  std::string t = test::replaced(kRing, "upper = [0.012, 0.012]", "upper = [0.012, 0.006]");
+  t += "[[geometry]]\nshape = \"box\"\nlower = [0.0, -0.012]\nupper = [0.012, 0.006]\nmaterial = \"water\"\n";
+  Case c = load_case_text(t, "ring.toml");
+  build_particles(c);
+  const Scene& sc = c.scene;
+  for (int i = 0; i < sc.count(); ++i) {
+    EXPECT_LT(sc.x[2 * i + 1], 0.006);
+    if (sc.x[2 * i] > 0) EXPECT_EQ(sc.material[i], 1);  // the box's lattice water
+  }
+}
+
+TEST(ConcentricLayout, OnlySpheresTakeALayout) {
+  const std::string msg = test::error_of(
+      test::replaced(kRing, "shape = \"sphere\"\ncenter = [0.0, 0.0]\nradius = 0.01", "shape = \"box\"\nlower = [-0.01, -0.01]\nupper = [0.01, 0.01]"));
+  EXPECT_NE(msg.find("bad.toml"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("geometry[0]"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("layout"), std::string::npos) << msg;
+  EXPECT_NE(test::error_of(test::replaced(kRing, "layout = \"concentric\"", "layout = \"hexagonal\"")).find("lattice"),
+            std::string::npos);
+}
