@@ -20,9 +20,11 @@ build: deps
 test: build
 	@ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 
-# Runs the embedded default case and says where its output went.
+# Runs the embedded default case with its figures, served to the browser: prints the URL to open
+# (DEMO_PORT, default 8080; the token in the URL allows pause, resume and stop).
+DEMO_PORT ?= 8080
 demo: build
-	@$(BUILD)/solver/poresph demo
+	@$(BUILD)/solver/poresph demo --serve $(DEMO_PORT) --pipeline phases
 
 validate: build
 	@$(BUILD)/solver/poresph validate

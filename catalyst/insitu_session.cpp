@@ -54,9 +54,12 @@ std::vector<std::string> InSituSession::stage(Engine& e) {
 
 void InSituSession::hand_over(Engine& e) {
   const auto t0 = std::chrono::steady_clock::now();
-  insitu_->execute(frame_, frames_++, e.time());
+  const long frame = frames_++;
+  insitu_->execute(frame_, frame, e.time());
   coprocess_s_ += seconds_since(t0);
   last_step_ = e.steps();
+  // The frame's images are written: say so to the dashboard (dashboard/run_watcher.hpp).
+  frames_csv_ << frame << ',' << e.steps() << ',' << e.time() << '\n' << std::flush;
 }
 
 void InSituSession::start(Engine& e, const Case& c, const std::string& run_dir,
@@ -68,6 +71,9 @@ void InSituSession::start(Engine& e, const Case& c, const std::string& run_dir,
   for (const auto& s : scripts_) paths.push_back(s.path);
   settings["pipelines"] = paths;
   fs::create_directories(run / "images");
+  frames_csv_.open(run / "images" / "frames.csv");
+  frames_csv_.precision(10);
+  frames_csv_ << "frame,step,time\n";
   const fs::path file = run / "images" / "visualisation.json";
   std::ofstream(file) << settings.dump(2) << "\n";
   const auto t0 = std::chrono::steady_clock::now();

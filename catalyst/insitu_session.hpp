@@ -2,6 +2,7 @@
 // The solver's side of in-situ visualisation for one run: which pipelines (case file and command
 // line), which fields they need, and on each output step the staging of exactly those fields
 // and the hand-over to Catalyst, timed.
+#include <fstream>
 #include <functional>
 #include <memory>
 #include <string>
@@ -48,6 +49,7 @@ class InSituSession {
   std::vector<std::string> fields_;
   std::string live_, note_;
   std::unique_ptr<InSitu> insitu_;
+  std::ofstream frames_csv_;  // images/frames.csv: frame, step, time of each frame handed over
   ParticleFrame frame_;
   long frames_ = 0, last_step_ = -1;
   double startup_s_ = 0, first_frame_s_ = 0, staging_s_ = 0, coprocess_s_ = 0;

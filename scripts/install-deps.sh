@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages poresph needs. Idempotent: when every package is present it
 # only checks (dpkg-query) and returns in well under a second.
-#   scripts/install-deps.sh            solver, tests, VTK output (ParaView 5.11)
+#   scripts/install-deps.sh            solver, tests, VTK output (ParaView 5.11), the dashboard
+#                                      (cpp-httplib; Chromium for its browser tests; the front-end's
+#                                      npm packages install at build time with the machine's npm)
 #   scripts/install-deps.sh --minimal  solver and tests only (no ParaView)
 set -euo pipefail
 
@@ -11,7 +13,8 @@ pkgs=(build-essential cmake ninja-build libomp-dev
 # ParaView: its CMake package needs its Python modules and the -dev packages its exported
 # targets name (MPI, GLEW, NetCDF, HDF5); Xvfb renders headless, ffmpeg assembles MP4s.
 [[ "${1:-}" == "--minimal" ]] || pkgs+=(paraview-dev python3-paraview libopenmpi-dev libglew-dev libnetcdf-dev
-                                        libhdf5-dev libx11-dev libfreetype-dev libboost-dev libxml2-dev xvfb ffmpeg)
+                                        libhdf5-dev libx11-dev libfreetype-dev libboost-dev libxml2-dev xvfb ffmpeg
+                                        libcpp-httplib-dev chromium)
 
 missing=()
 for p in "${pkgs[@]}"; do

@@ -8,8 +8,12 @@
 #include <cstdio>
 #include <iostream>
 #include <sstream>
+#include <thread>
 
 #include "app/commands.hpp"
+#include "app/output_clock.hpp"
+#include "app/run_supervision.hpp"
+#include "dashboard/dashboard_server.hpp"
 #include "catalyst/figures.hpp"
 #include "catalyst/insitu_session.hpp"
 #include "engine/engine.hpp"
@@ -108,15 +112,13 @@ int drive(Case& c, const RunOptions& opt) {
       extract_fields.push_back(f);
   ParticleWriter writer(rd->extracts(), extract_fields);
   const double t_end = c.end_time;
-  const double dt_mon = c.output.monitor_interval > 0 ? c.output.monitor_interval : t_end / 100;
+  double dt_mon = c.output.monitor_interval > 0 ? c.output.monitor_interval : t_end / 100;
   // With pipelines: a frame every visualisation.interval (default a fiftieth of the run), and
   // extracts at the same times unless output.extract_interval says otherwise.
-  const double dt_vis = c.visualisation.interval > 0 ? c.visualisation.interval : t_end / 50;
-  const double dt_ext = c.output.extract_interval > 0 ? c.output.extract_interval : insitu->active() ? dt_vis : t_end;
+  double dt_vis = c.visualisation.interval > 0 ? c.visualisation.interval : t_end / 50;
+  double dt_ext = c.output.extract_interval > 0 ? c.output.extract_interval : insitu->active() ? dt_vis : t_end;
   const double dt_ck = c.output.checkpoint_interval > 0 ? c.output.checkpoint_interval : t_end / 10;
-  // The next output times after the start (a restart starts part-way).
-  auto next_index = [&](double interval) { return long(std::floor(engine->time() / interval * (1 + 1e-12))) + 1; };
-  long n_mon = next_index(dt_mon), n_ext = next_index(dt_ext), n_ck = next_index(dt_ck), n_vis = next_index(dt_vis);
+  OutputClock mon(dt_mon, engine->time()), ext(dt_ext, engine->time()), ck(dt_ck, engine->time()), vis(dt_vis, engine->time());
   long last_checkpoint_step = -1;
   auto checkpoint = [&] {
     if (engine->steps() == last_checkpoint_step) return;
@@ -173,33 +175,65 @@ int drive(Case& c, const RunOptions& opt) {
     }
   }
 
+  RunStatus base;
+  base.case_name = c.name, base.backend = engine->backend(), base.device = engine->device();
+  base.precision = precision_name(), base.dimension = c.scene.dimension, base.particles = engine->particles();
+  base.end_time = t_end, base.extracts = extracts, base.pipelines = insitu->active();
+  base.monitor_interval = dt_mon, base.extract_interval = dt_ext, base.visualisation_interval = dt_vis;
+  RunSupervision supervision(rd->path(), base);
+  auto wall_now = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
+  supervision.report(*engine, "running", wall_now(), true);
+  std::unique_ptr<DashboardServer> dashboard;
+  if (opt.serve >= 0) {
+    try {
+      dashboard = std::make_unique<DashboardServer>(DashboardOptions{rd->path(), "", opt.bind, opt.serve});
+    } catch (const std::exception& e) {
+      rd->log(std::string("failed: dashboard: ") + e.what());
+      supervision.finish(*engine, "failed", std::string("dashboard: ") + e.what(), wall_now());
+      return 2;
+    }
+    rd->log("dashboard: " + dashboard->url() + "?token=" + supervision.token() + " (the token, also in " + rd->path() +
+            "/token, is needed to pause, resume or stop)");
+  }
+  // Requests from the dashboard (dashboard/run_control.hpp): pause until resumed, stop, cadence.
+  bool paused = false, stop = false;
+  auto take_requests = [&] {
+    for (const ControlRequest& r : supervision.requests([&](const std::string& l) { rd->log(l); })) {
+      using A = ControlRequest::Action;
+      if (r.action == A::Pause && !paused) paused = true, rd->log("paused at step " + std::to_string(engine->steps()));
+      else if (r.action == A::Resume && paused) paused = false, rd->log("resumed at step " + std::to_string(engine->steps()));
+      else if (r.action == A::Stop) stop = true;
+      else if (r.action == A::Cadence) {
+        const double t = engine->time();
+        if (r.monitor_interval > 0) dt_mon = r.monitor_interval, mon.set_interval(dt_mon, t);
+        if (r.extract_interval > 0) dt_ext = r.extract_interval, ext.set_interval(dt_ext, t);
+        if (r.visualisation_interval > 0) dt_vis = r.visualisation_interval, vis.set_interval(dt_vis, t);
+        supervision.set_intervals(dt_mon, dt_ext, dt_vis);
+        std::ostringstream l;
+        l << "output cadence: monitors every " << dt_mon << " s, extracts every " << dt_ext << " s, frames every " << dt_vis << " s";
+        rd->log(l.str());
+      }
+    }
+  };
+
   g_signal = 0;
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   auto last_print = t0;
-  std::string status = "completed";
+  std::string status = "completed", diagnostic;
   int code = 0;
   try {
     while (engine->time() < t_end) {
-      const double t_next = std::min({t_end, n_mon * dt_mon, n_ext * dt_ext, insitu->active() ? n_vis * dt_vis : t_end});
+      const double t_next = std::min({t_end, mon.next(), ext.next(), insitu->active() ? vis.next() : t_end});
       engine->step(t_next);
       const double t = engine->time();
-      if (t >= n_mon * dt_mon * (1 - 1e-12)) {
-        monitor();
-        while (n_mon * dt_mon <= t * (1 + 1e-12)) ++n_mon;
-      }
-      if (t >= n_ext * dt_ext * (1 - 1e-12)) {
+      if (mon.due(t)) monitor(), mon.pass(t);
+      if (ext.due(t)) {
         if (extracts) writer.write(*engine);
-        while (n_ext * dt_ext <= t * (1 + 1e-12)) ++n_ext;
+        ext.pass(t);
       }
-      if (insitu->active() && t >= n_vis * dt_vis * (1 - 1e-12)) {
-        insitu->output(*engine);
-        while (n_vis * dt_vis <= t * (1 + 1e-12)) ++n_vis;
-      }
-      if (t >= n_ck * dt_ck * (1 - 1e-12)) {
-        checkpoint();
-        while (n_ck * dt_ck <= t * (1 + 1e-12)) ++n_ck;
-      }
+      if (insitu->active() && vis.due(t)) insitu->output(*engine), vis.pass(t);
+      if (ck.due(t)) checkpoint(), ck.pass(t);
       const auto now = clock::now();
       const double wall = std::chrono::duration<double>(now - t0).count();
       if (!opt.quiet && (std::chrono::duration<double>(now - last_print).count() > 2.0 || t >= t_end)) {
@@ -211,6 +245,21 @@ int drive(Case& c, const RunOptions& opt) {
                       engine->steps(), t, 100 * t / t_end, engine->last_dt(), sps, seconds_text(left).c_str());
         rd->log(line);
       }
+      take_requests();
+      if (paused && !stop) {
+        supervision.report(*engine, "paused", wall_now(), true);
+        while (paused && !stop && !g_signal) {
+          std::this_thread::sleep_for(std::chrono::milliseconds(50));
+          take_requests();
+          supervision.report(*engine, paused ? "paused" : "running", wall_now());
+        }
+      }
+      supervision.report(*engine, "running", wall_now());
+      if (stop) {
+        status = "stopped";
+        rd->log("stopped from the dashboard at t = " + std::to_string(engine->time()) + " s, step " + std::to_string(engine->steps()));
+        break;
+      }
       if (g_signal) {
         status = "interrupted";
         code = 130;
@@ -221,10 +270,12 @@ int drive(Case& c, const RunOptions& opt) {
   } catch (const InstabilityError& e) {
     status = "unstable";
     code = 3;
+    diagnostic = e.what();
     rd->log(std::string("unstable: ") + e.what());
   } catch (const std::exception& e) {
     status = "failed";
     code = 4;
+    diagnostic = e.what();
     rd->log(std::string("failed: ") + e.what());
   }
   std::signal(SIGINT, SIG_DFL);
@@ -234,11 +285,10 @@ int drive(Case& c, const RunOptions& opt) {
     monitor();
     checkpoint();
   }
-  if (extracts && status == "interrupted") writer.write(*engine);
-  if (extracts) writer.write_collection();
+  if (extracts && (status == "interrupted" || status == "stopped")) writer.write(*engine);
   if (insitu->active()) {
     try {
-      if (status == "interrupted") insitu->output(*engine);  // the state it stopped at, as a last frame
+      if (status == "interrupted" || status == "stopped") insitu->output(*engine);  // the state it stopped at, as a last frame
       insitu->finish();
     } catch (const std::exception& e) {
       rd->log(std::string("warning: in-situ visualisation: ") + e.what());
@@ -271,6 +321,11 @@ int drive(Case& c, const RunOptions& opt) {
     rd->log(insitu->report(wall));
   }
   rd->write_summary(j);
+  supervision.finish(*engine, status, diagnostic, wall);
+  if (dashboard) {
+    dashboard->stop();  // after a last look at the run directory: its clients get the final state
+    rd->log("dashboard closed; `poresph serve " + rd->path() + "` shows the finished run");
+  }
   rd->log("run " + status + " after " + std::to_string(engine->steps()) + " steps in " + seconds_text(wall) +
           "; output in " + rd->path());
   return code;

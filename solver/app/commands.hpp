@@ -12,6 +12,8 @@ struct RunOptions {
   std::string restart;  // checkpoint file, or a run directory (its newest checkpoint)
   std::vector<std::string> pipelines;  // Catalyst pipelines (names in pipelines/ or .py paths)
   std::string live;                    // HOST:PORT of a ParaView GUI for Catalyst Live
+  int serve = -1;                      // dashboard port (0: any free one); -1: no dashboard
+  std::string bind = "127.0.0.1";      // the dashboard's address
 };
 
 // Exit codes: 0 done, 2 bad input (nothing written), 3 unstable run (diagnostic in log.txt),
@@ -21,6 +23,9 @@ int cmd_demo(const RunOptions& opt);
 int cmd_check(const std::string& case_path);
 // Re-renders a run's figure sequences from its extracts (`pipelines` empty = the run's own).
 int cmd_figures(const std::string& run_dir, const std::vector<std::string>& pipelines);
+// Serves the dashboard of a run directory (finished, or still running in another process) until
+// interrupted.
+int cmd_serve(const std::string& run_dir, int port, const std::string& bind);
 int cmd_validate(const std::vector<std::string>& names, bool full, bool json, const std::string& backend);
 // `names`: benchmarks to run (default all); an unknown name is exit 2.
 int cmd_bench(const std::vector<std::string>& names, bool json, const std::string& backend, bool quick,

@@ -1,4 +1,4 @@
-// poresph command line: run, check, validate, bench, demo, figures.
+// poresph command line: run, check, validate, bench, demo, figures, serve.
 #include <CLI/CLI.hpp>
 #include <vector>
 
@@ -10,7 +10,7 @@ int main(int argc, char** argv) {
   psph::RunOptions ro;
   const std::vector<std::string> backends{"cpu", "cuda"};
 
-  std::string case_path;
+  std::string case_path, run_dir;
   auto* run = app.add_subcommand("run", "run a case file");
   run->add_option("case", case_path, "case file (TOML)")->required();
   run->add_option("--backend", ro.backend, "cpu or cuda")->check(CLI::IsMember(backends));
@@ -20,8 +20,16 @@ int main(int argc, char** argv) {
   run->add_option("--pipeline", ro.pipelines, "Catalyst pipeline: a name in pipelines/ (phases, pressure, damage, "
                  "principal_stress, colour) or a .py script; repeatable");
   run->add_option("--live", ro.live, "HOST:PORT of a ParaView GUI to attach with Catalyst Live");
+  run->add_option("--serve", ro.serve, "serve the browser dashboard on this port (0: any free port)")->check(CLI::Range(0, 65535));
+  run->add_option("--bind", ro.bind, "the dashboard's address (default 127.0.0.1; 0.0.0.0 for every interface)");
 
-  std::string run_dir;
+  int serve_port = 8080;
+  std::string serve_bind = "127.0.0.1";
+  auto* serve = app.add_subcommand("serve", "serve the browser dashboard of a run directory (finished or running)");
+  serve->add_option("rundir", run_dir, "run directory")->required();
+  serve->add_option("--port", serve_port, "port (default 8080; 0: any free port)")->check(CLI::Range(0, 65535));
+  serve->add_option("--bind", serve_bind, "address (default 127.0.0.1; 0.0.0.0 for every interface)");
+
   std::vector<std::string> fig_pipelines;
   auto* figures = app.add_subcommand("figures", "re-render a run's figure sequences from its extracts (pvbatch), MP4 with ffmpeg");
   figures->add_option("rundir", run_dir, "run directory")->required();
@@ -52,10 +60,14 @@ int main(int argc, char** argv) {
   demo->add_option("--backend", ro.backend, "cpu or cuda")->check(CLI::IsMember(backends));
   demo->add_option("--out", ro.out, "run directory");
   demo->add_flag("--quiet", ro.quiet, "no progress lines on the terminal");
+  demo->add_option("--pipeline", ro.pipelines, "Catalyst pipeline (as for run); repeatable");
+  demo->add_option("--serve", ro.serve, "serve the browser dashboard on this port (0: any free port)")->check(CLI::Range(0, 65535));
+  demo->add_option("--bind", ro.bind, "the dashboard's address (default 127.0.0.1)");
 
   CLI11_PARSE(app, argc, argv);
   if (*run) return psph::cmd_run(case_path, ro);
   if (*check) return psph::cmd_check(case_path);
+  if (*serve) return psph::cmd_serve(run_dir, serve_port, serve_bind);
   if (*figures) return psph::cmd_figures(run_dir, fig_pipelines);
   if (*validate) return psph::cmd_validate(names, full, json, vbackend);
   if (*bench) return psph::cmd_bench(bench_names, json, vbackend, quick, accuracy, stability);

@@ -36,16 +36,18 @@ std::string ParticleWriter::write(Engine& e) {
   if (!missing.empty()) throw std::runtime_error("output.fields: no particle field '" + missing.front() + "'");
   ParticlePolyData poly;
   vtkNew<vtkXMLPolyDataWriter> w;
-  w->SetFileName(path.c_str());
+  w->SetFileName((path + ".tmp").c_str());  // renamed when whole: a watcher never reads half a file
   w->SetInputData(poly.wrap(frame_));
   w->SetDataModeToAppended();
   w->SetCompressorTypeToZLib();
   if (w->Write() != 1) throw std::runtime_error(path + ": VTK could not write the extract");
+  std::filesystem::rename(path + ".tmp", path);
 #else
   (void)e;
   throw std::runtime_error("particle extracts need ParaView's VTK; this poresph was built without it");
 #endif
   written_.emplace_back(e.time(), name);
+  write_collection();  // kept current, for ParaView and the dashboard to follow a running run
   return path;
 }
 

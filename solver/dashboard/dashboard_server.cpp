@@ -1,0 +1,220 @@
+#include "dashboard/dashboard_server.hpp"
+
+#include <httplib.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "dashboard/run_control.hpp"
+#include "dashboard/run_status.hpp"
+#include "dashboard/run_watcher.hpp"
+
+namespace psph {
+namespace fs = std::filesystem;
+
+bool dashboard_available() { return true; }
+
+std::string web_directory() {
+  if (const char* env = std::getenv("PORESPH_WEB_DIR")) return env;
+#ifdef PORESPH_WEB_DIR
+  if (fs::exists(fs::path(PORESPH_WEB_DIR) / "index.html")) return PORESPH_WEB_DIR;
+#endif
+  return "";
+}
+
+namespace {
+
+const char* content_type(const fs::path& p) {
+  const std::string e = p.extension().string();
+  if (e == ".png") return "image/png";
+  if (e == ".vtp" || e == ".pvd") return "application/octet-stream";
+  if (e == ".csv") return "text/csv";
+  if (e == ".json") return "application/json";
+  return "text/plain; charset=utf-8";
+}
+
+// True when `p` (relative to the run directory) is in images/ or extracts/, or one of the run's
+// text files.
+bool allowed(const fs::path& p) {
+  static const std::set<std::string> files{"monitors.csv", "log.txt", "summary.json", "case.resolved.toml", "status.json"};
+  if (p.empty()) return false;
+  const std::string top = p.begin()->string();
+  const auto depth = std::distance(p.begin(), p.end());
+  return ((top == "images" || top == "extracts") && depth > 1) || (files.count(top) && depth == 1);
+}
+
+// The file under the run directory that `rel` names, or "" when it may not be served: only what
+// allowed() lets through, no '..', and the same again once links are followed (a link may not
+// lead out of the run directory, nor to its token).
+fs::path servable(const fs::path& run, const std::string& rel) {
+  if (rel.empty() || rel.find('\0') != std::string::npos || rel.find('\\') != std::string::npos || rel.front() == '/')
+    return {};
+  const fs::path p(rel);
+  for (const auto& part : p)
+    if (part == ".." || part == "." || part.empty()) return {};
+  if (!allowed(p)) return {};
+  std::error_code ec;
+  const fs::path root = fs::canonical(run, ec);
+  if (ec) return {};
+  const fs::path full = fs::weakly_canonical(run / p, ec);
+  if (ec) return {};
+  const fs::path inside = full.lexically_relative(root);
+  if (inside.empty() || *inside.begin() == ".." || !allowed(inside)) return {};
+  return full;
+}
+
+std::string not_built_page() {
+  return "<!doctype html><title>poresph</title><p>This poresph was built without its web front-end "
+         "(web/, needs npm at build time). The run's state is at <a href=\"/api/state\">/api/state</a>.</p>";
+}
+
+void json_error(httplib::Response& res, int code, const std::string& msg) {
+  res.status = code;
+  res.set_content(nlohmann::json{{"error", msg}}.dump(), "application/json");
+}
+
+}  // namespace
+
+struct DashboardServer::Impl {
+  DashboardOptions opt;
+  httplib::Server http;
+  RunWatcher watcher;
+  std::thread serve_thread, poll_thread;
+  std::atomic<bool> stopping{false};
+  int port = 0;
+
+  explicit Impl(const DashboardOptions& o) : opt(o), watcher(o.run_dir) {}
+};
+
+DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_unique<Impl>(opt)) {
+  Impl& d = *impl_;
+  if (!fs::is_directory(opt.run_dir)) throw std::runtime_error(opt.run_dir + ": not a run directory");
+  const int threads = opt.threads;
+  d.http.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
+  const std::string web = opt.web_dir.empty() ? web_directory() : opt.web_dir;
+  if (!web.empty()) d.http.set_mount_point("/", web);
+  else d.http.Get("/", [](const httplib::Request&, httplib::Response& res) { res.set_content(not_built_page(), "text/html"); });
+
+  d.http.Get("/api/state", [&d](const httplib::Request&, httplib::Response& res) {
+    nlohmann::json s = d.watcher.snapshot();
+    s["control"] = !read_run_token(d.opt.run_dir).empty();
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(s.dump(), "application/json");
+  });
+
+  d.http.Get("/api/events", [&d](const httplib::Request& req, httplib::Response& res) {
+    long since = 0;
+    try {
+      // A reconnecting EventSource says where it stopped; that wins over the page's first ?since.
+      if (req.has_header("Last-Event-ID")) since = std::stol(req.get_header_value("Last-Event-ID"));
+      else if (req.has_param("since")) since = std::stol(req.get_param_value("since"));
+    } catch (const std::exception&) {
+      return json_error(res, 400, "since: expected an event number");
+    }
+    res.set_header("Cache-Control", "no-store");
+    auto last = std::make_shared<long>(since);
+    res.set_chunked_content_provider("text/event-stream", [&d, last](size_t, httplib::DataSink& sink) {
+      const bool ending = d.stopping || d.watcher.stopped();
+      // Sleeps until an event (or the server's stop) wakes it, at most 15 s: then a comment keeps
+      // the connection open through proxies.
+      const auto events = d.watcher.events_after(*last, std::chrono::milliseconds(ending ? 0 : 15000));
+      std::string out;
+      for (const DashboardEvent& e : events) {
+        out += "id: " + std::to_string(e.id) + "\nevent: " + e.type + "\ndata: " + e.data.dump() + "\n\n";
+        *last = e.id;
+      }
+      if (out.empty() && !ending) out = ": keep-alive\n\n";
+      if (!out.empty() && !sink.write(out.data(), out.size())) return false;  // the browser left
+      if (ending) sink.done();  // the run's last events are out
+      return true;
+    });
+  });
+
+  d.http.Post("/api/control", [&d](const httplib::Request& req, httplib::Response& res) {
+    const std::string token = read_run_token(d.opt.run_dir);
+    const std::string given = req.get_header_value("X-Poresph-Token");
+    if (token.empty()) return json_error(res, 403, "this run takes no control requests (it has no token)");
+    if (given.size() != token.size() || !std::equal(given.begin(), given.end(), token.begin()))
+      return json_error(res, 403, "control needs the run's token in the X-Poresph-Token header");
+    ControlRequest r;
+    try {
+      r = control_request_from_json(nlohmann::json::parse(req.body));
+    } catch (const nlohmann::json::exception&) {
+      return json_error(res, 400, "expected a JSON body {\"action\": ...}");
+    } catch (const std::invalid_argument& e) {
+      return json_error(res, 400, e.what());
+    }
+    const nlohmann::json st = d.watcher.snapshot()["status"];
+    if (st.is_null() || !(st["state"] == "starting" || st["state"] == "running" || st["state"] == "paused"))
+      return json_error(res, 409, "the run is not running (state " + (st.is_null() ? std::string("unknown") : st["state"].get<std::string>()) + ")");
+    try {
+      post_control_request(d.opt.run_dir, r);
+    } catch (const std::exception& e) {
+      return json_error(res, 500, e.what());
+    }
+    res.status = 202;
+    res.set_content(nlohmann::json{{"accepted", to_json(r)}}.dump(), "application/json");
+  });
+
+  d.http.Get(R"(/run/(.+))", [&d](const httplib::Request& req, httplib::Response& res) {
+    const fs::path p = servable(d.opt.run_dir, req.matches[1].str());
+    if (p.empty()) return json_error(res, 403, "not a file of the run's images, extracts or records");
+    std::ifstream in(p, std::ios::binary);
+    if (!in || fs::is_directory(p)) return json_error(res, 404, "no such file in the run directory");
+    std::ostringstream s;
+    s << in.rdbuf();
+    res.set_content(s.str(), content_type(p));
+  });
+
+  d.http.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
+    json_error(res, 500, "internal error");
+  });
+  d.http.set_payload_max_length(64 * 1024);
+  d.http.set_keep_alive_timeout(2);  // idle connections do not hold a stop back
+
+  d.watcher.poll();
+  if (opt.port == 0) {
+    d.port = d.http.bind_to_any_port(opt.bind);
+    if (d.port <= 0) throw std::runtime_error("--bind " + opt.bind + ": cannot listen there");
+  } else {
+    if (!d.http.bind_to_port(opt.bind, opt.port))
+      throw std::runtime_error("--serve " + std::to_string(opt.port) + ": cannot listen on " + opt.bind + ":" +
+                               std::to_string(opt.port) + " (in use, or not an address of this machine)");
+    d.port = opt.port;
+  }
+  d.serve_thread = std::thread([&d] { d.http.listen_after_bind(); });
+  d.poll_thread = std::thread([&d] {
+    while (!d.stopping) {
+      std::this_thread::sleep_for(std::chrono::duration<double>(d.opt.poll_period));
+      d.watcher.poll();
+    }
+  });
+}
+
+DashboardServer::~DashboardServer() { stop(); }
+
+int DashboardServer::port() const { return impl_->port; }
+
+std::string DashboardServer::url() const {
+  const std::string host = impl_->opt.bind == "0.0.0.0" ? "127.0.0.1" : impl_->opt.bind;
+  return "http://" + host + ":" + std::to_string(impl_->port) + "/";
+}
+
+void DashboardServer::stop() {
+  Impl& d = *impl_;
+  if (d.stopping.exchange(true)) return;
+  d.watcher.poll();  // the run's last words
+  d.watcher.stop();  // wakes the event streams, which send what is left and end
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  d.http.stop();
+  if (d.serve_thread.joinable()) d.serve_thread.join();
+  if (d.poll_thread.joinable()) d.poll_thread.join();
+}
+
+}  // namespace psph

@@ -1,0 +1,53 @@
+#pragma once
+// A run's state for its observers (the dashboard, `poresph serve`): status.json in the run
+// directory, rewritten atomically (temporary file, then rename) on every change of state and at
+// most every `period` seconds while it runs, so a server in another process can attach.
+#include <chrono>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace psph {
+
+struct RunStatus {
+  // starting, running, paused; then completed, stopped (from the dashboard), interrupted (a
+  // signal), unstable or failed (with `diagnostic`).
+  std::string state = "starting";
+  std::string diagnostic;
+  std::string case_name, backend, device, precision;
+  int dimension = 0, particles = 0;
+  long step = 0;
+  double time = 0, dt = 0, end_time = 0;
+  double steps_per_second = 0;  // over the last status period
+  double elapsed = 0;           // wall seconds since the run started (pauses included)
+  double time_left = -1;        // estimated wall seconds (-1: unknown)
+  double monitor_interval = 0, extract_interval = 0, visualisation_interval = 0;  // simulated s
+  bool extracts = false, pipelines = false, checkpoints = true;
+  long pid = 0;
+  double updated = 0;  // Unix time of the write
+
+  bool live() const { return state == "starting" || state == "running" || state == "paused"; }
+};
+
+nlohmann::json to_json(const RunStatus& s);
+// Throws std::invalid_argument naming the key that is missing or of the wrong type.
+RunStatus status_from_json(const nlohmann::json& j);
+
+class StatusFile {
+ public:
+  StatusFile(std::string run_dir, double period = 0.5);
+  // True when `period` has passed since the last write (the caller then builds and passes a status).
+  bool due() const;
+  // Writes when the state changed or `period` has passed since the last write (or `force`).
+  void update(RunStatus s, bool force = false);
+  const RunStatus& last() const { return last_; }
+
+ private:
+  std::string path_;
+  double period_;
+  RunStatus last_;
+  bool written_ = false;
+  std::chrono::steady_clock::time_point last_write_{};
+};
+
+}  // namespace psph

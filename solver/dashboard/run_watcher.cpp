@@ -1,0 +1,213 @@
+#include "dashboard/run_watcher.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "dashboard/run_status.hpp"
+
+namespace psph {
+namespace fs = std::filesystem;
+namespace {
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The bytes of `p` after `offset`, up to its last newline; advances `offset` past them.
+std::string new_lines(const fs::path& p, std::uintmax_t& offset) {
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(p, ec);
+  if (ec || size <= offset) return "";
+  std::ifstream in(p, std::ios::binary);
+  in.seekg(static_cast<std::streamoff>(offset));
+  std::string chunk(size - offset, '\0');
+  in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+  chunk.resize(static_cast<std::size_t>(in.gcount()));
+  const auto last = chunk.rfind('\n');
+  if (last == std::string::npos) return "";
+  chunk.resize(last + 1);
+  offset += chunk.size();
+  return chunk;
+}
+
+std::vector<std::string> split(const std::string& line, char sep) {
+  std::vector<std::string> out;
+  std::string item;
+  std::istringstream s(line);
+  while (std::getline(s, item, sep)) out.push_back(item);
+  return out;
+}
+
+}  // namespace
+
+RunWatcher::RunWatcher(std::string run_dir) : dir_(std::move(run_dir)) {}
+
+void RunWatcher::emit(const std::string& type, nlohmann::json data) {
+  DashboardEvent e;
+  e.id = static_cast<long>(events_.size()) + 1;
+  e.type = type;
+  e.data = std::move(data);
+  events_.push_back(std::move(e));
+}
+
+void RunWatcher::poll() {
+  {
+    std::lock_guard<std::mutex> lock(m_);
+    const std::size_t before = events_.size();
+    poll_monitors();
+    poll_frames();
+    poll_extracts();
+    poll_status();  // last: a finished state comes after the rows and frames it ends
+    if (events_.size() == before) return;
+  }
+  cv_.notify_all();
+}
+
+void RunWatcher::poll_status() {
+  const std::string text = read_file(fs::path(dir_) / "status.json");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+    status_from_json(j);  // complete and well-typed
+  } catch (const std::exception&) {
+    return;  // none yet
+  }
+  // A live state whose process has gone (killed before it could say so).
+  if ((j["state"] == "running" || j["state"] == "paused" || j["state"] == "starting") && j["pid"].get<long>() > 0 &&
+      ::kill(static_cast<pid_t>(j["pid"].get<long>()), 0) != 0 && errno == ESRCH) {
+    j["state"] = "lost";
+    j["diagnostic"] = "the run's process (pid " + std::to_string(j["pid"].get<long>()) + ") ended without a final status";
+  }
+  const std::string now = j.dump();
+  if (now == status_text_) return;
+  status_text_ = now;
+  status_ = j;
+  emit("status", j);
+}
+
+void RunWatcher::poll_monitors() {
+  const std::string chunk = new_lines(fs::path(dir_) / "monitors.csv", monitor_offset_);
+  if (chunk.empty()) return;
+  nlohmann::json rows = nlohmann::json::array();
+  std::istringstream s(chunk);
+  std::string line;
+  while (std::getline(s, line)) {
+    if (line.empty()) continue;
+    if (columns_.empty()) {
+      for (const auto& c : split(line, ',')) columns_.push_back(c);
+      emit("columns", columns_);
+      continue;
+    }
+    nlohmann::json row = nlohmann::json::array();
+    for (const auto& v : split(line, ',')) {
+      try {
+        row.push_back(std::stod(v));
+      } catch (const std::exception&) {
+        row.push_back(nullptr);  // nan, inf or text: no point on the chart
+      }
+    }
+    rows.push_back(row);
+    rows_.push_back(row);
+  }
+  if (!rows.empty()) emit("monitors", rows);
+}
+
+void RunWatcher::poll_frames() {
+  const fs::path images = fs::path(dir_) / "images";
+  const std::string chunk = new_lines(images / "frames.csv", frames_offset_);
+  if (chunk.empty()) return;
+  std::istringstream s(chunk);
+  std::string line;
+  while (std::getline(s, line)) {
+    const std::vector<std::string> f = split(line, ',');
+    if (f.size() != 3 || f[0] == "frame") continue;
+    nlohmann::json frame;
+    try {
+      frame = {{"frame", std::stol(f[0])}, {"step", std::stol(f[1])}, {"time", std::stod(f[2])}};
+    } catch (const std::exception&) {
+      continue;
+    }
+    char suffix[32];
+    std::snprintf(suffix, sizeof suffix, "_%06ld.png", frame["frame"].get<long>());
+    nlohmann::json list = nlohmann::json::array();
+    std::error_code ec;
+    std::vector<fs::path> found;
+    for (const auto& pipe : fs::directory_iterator(images, ec)) {
+      if (!pipe.is_directory()) continue;
+      for (const auto& img : fs::directory_iterator(pipe.path(), ec)) {
+        const std::string name = img.path().filename().string();
+        if (name.size() > std::strlen(suffix) && name.compare(name.size() - std::strlen(suffix), std::string::npos, suffix) == 0)
+          found.push_back(img.path());
+      }
+    }
+    std::sort(found.begin(), found.end());
+    for (const fs::path& p : found) {
+      const std::string name = p.filename().string();
+      list.push_back({{"pipeline", p.parent_path().filename().string()},
+                      {"view", name.substr(0, name.size() - std::strlen(suffix))},
+                      {"url", "/run/images/" + p.parent_path().filename().string() + "/" + name}});
+    }
+    frame["images"] = list;
+    frames_.push_back(frame);
+    emit("frame", frame);
+  }
+}
+
+void RunWatcher::poll_extracts() {
+  const std::string text = read_file(fs::path(dir_) / "extracts" / "particles.pvd");
+  if (text == pvd_text_) return;
+  pvd_text_ = text;
+  static const std::regex entry(R"re(<DataSet\s+timestep="([^"]*)"\s+file="([^"/\\]*\.vtp)"\s*/>)re");
+  std::size_t index = 0;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), entry); it != std::sregex_iterator(); ++it, ++index) {
+    if (index < extracts_.size()) continue;
+    nlohmann::json e;
+    try {
+      e = {{"index", index}, {"time", std::stod((*it)[1].str())}, {"url", "/run/extracts/" + (*it)[2].str()}};
+    } catch (const std::exception&) {
+      break;
+    }
+    extracts_.push_back(e);
+    emit("extract", e);
+  }
+}
+
+nlohmann::json RunWatcher::snapshot() const {
+  std::lock_guard<std::mutex> lock(m_);
+  return {{"status", status_}, {"columns", columns_}, {"rows", rows_}, {"frames", frames_},
+          {"extracts", extracts_}, {"last_event", static_cast<long>(events_.size())}};
+}
+
+std::vector<DashboardEvent> RunWatcher::events_after(long since, std::chrono::milliseconds wait) const {
+  std::unique_lock<std::mutex> lock(m_);
+  if (since < 0) since = 0;
+  cv_.wait_for(lock, wait, [&] { return stopped_ || static_cast<long>(events_.size()) > since; });
+  std::vector<DashboardEvent> out;
+  for (long k = since; k < static_cast<long>(events_.size()); ++k) out.push_back(events_[k]);
+  return out;
+}
+
+void RunWatcher::stop() {
+  {
+    std::lock_guard<std::mutex> lock(m_);
+    stopped_ = true;
+  }
+  cv_.notify_all();
+}
+
+bool RunWatcher::stopped() const {
+  std::lock_guard<std::mutex> lock(m_);
+  return stopped_;
+}
+
+}  // namespace psph

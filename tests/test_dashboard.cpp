@@ -1,0 +1,277 @@
+// The dashboard's server over real HTTP (cpp-httplib's client), on a run directory the tests
+// write as a run would: the token guards control, nothing outside the run's images, extracts and
+// records is served, malformed requests get 4xx, a reader that leaves harms nobody, many readers
+// are served at once; and the run's side: control requests in order, status.json.
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <gtest/gtest.h>
+#include <httplib.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "dashboard/dashboard_server.hpp"
+#include "dashboard/run_control.hpp"
+#include "dashboard/run_status.hpp"
+#include "dashboard/run_watcher.hpp"
+
+using namespace psph;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A run directory as a live run leaves it: status, two monitor rows, a frame, an extract, a token.
+struct FakeRun {
+  fs::path dir;
+  std::string token;
+  explicit FakeRun(const std::string& name, const std::string& state = "running") {
+    dir = fs::temp_directory_path() / ("poresph_dashboard_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    for (const char* sub : {"images/phases", "extracts", "checkpoints"}) fs::create_directories(dir / sub);
+    std::ofstream(dir / "case.resolved.toml") << "[case]\nname = \"fake\"\n";
+    std::ofstream(dir / "checkpoints" / "step_0000000010.ckpt") << "secret state";
+    std::ofstream(dir / "monitors.csv") << "step,time,kinetic_energy\n0,0,0\n10,0.001,2.5e-7\n";
+    std::ofstream(dir / "images" / "phases" / "3d_000000.png") << "png bytes";
+    std::ofstream(dir / "images" / "frames.csv") << "frame,step,time\n0,0,0\n";
+    std::ofstream(dir / "extracts" / "particles_000000.vtp") << "<VTKFile/>";
+    std::ofstream(dir / "extracts" / "particles.pvd")
+        << "<VTKFile>\n<Collection>\n    <DataSet timestep=\"0\" file=\"particles_000000.vtp\"/>\n</Collection>\n</VTKFile>\n";
+    set_state(state);
+    token = create_run_token(dir.string());
+  }
+  ~FakeRun() { fs::remove_all(dir); }
+  void set_state(const std::string& state) {
+    RunStatus s;
+    s.case_name = "fake", s.backend = "cpu", s.device = "test", s.precision = "double";
+    s.state = state, s.step = 10, s.time = 0.001, s.end_time = 1;
+    StatusFile(dir.string()).update(s, true);
+  }
+  void append_row(const std::string& row) { std::ofstream(dir / "monitors.csv", std::ios::app) << row << std::flush; }
+};
+
+struct Served {
+  FakeRun run;
+  DashboardServer server;
+  explicit Served(const std::string& name, const std::string& state = "running")
+      : run(name, state), server(DashboardOptions{run.dir.string(), "/nonexistent", "127.0.0.1", 0, 0.05}) {}
+  httplib::Client client() const { return httplib::Client("127.0.0.1", server.port()); }
+};
+
+int post_control(Served& s, const std::string& body, const std::string* token) {
+  httplib::Headers h;
+  if (token) h.emplace("X-Poresph-Token", *token);
+  auto r = s.client().Post("/api/control", h, body, "application/json");
+  return r ? r->status : -1;
+}
+
+int status_of(Served& s, const std::string& path) {
+  auto r = s.client().Get(path.c_str());
+  return r ? r->status : -1;
+}
+
+}  // namespace
+
+TEST(Dashboard, ControlNeedsTheRunsToken) {
+  Served s("token");
+  const std::string wrong(s.run.token.size(), '0'), shorter = s.run.token.substr(1);
+  EXPECT_EQ(post_control(s, R"({"action":"pause"})", nullptr), 403);
+  EXPECT_EQ(post_control(s, R"({"action":"pause"})", &wrong), 403);
+  EXPECT_EQ(post_control(s, R"({"action":"pause"})", &shorter), 403);
+  EXPECT_FALSE(fs::exists(s.run.dir / "control"));  // nothing reached the run
+  EXPECT_EQ(post_control(s, R"({"action":"pause"})", &s.run.token), 202);
+  EXPECT_EQ(post_control(s, R"({"action":"cadence","monitor_interval":0.01})", &s.run.token), 202);
+  // Malformed: 400, nothing posted.
+  EXPECT_EQ(post_control(s, "{not json", &s.run.token), 400);
+  EXPECT_EQ(post_control(s, R"({"action":"explode"})", &s.run.token), 400);
+  EXPECT_EQ(post_control(s, R"({"action":"cadence","monitor_interval":-1})", &s.run.token), 400);
+  EXPECT_EQ(post_control(s, R"({"action":"cadence"})", &s.run.token), 400);
+  EXPECT_EQ(post_control(s, R"([1,2])", &s.run.token), 400);
+  // The run takes exactly the two good ones, in order.
+  ControlInbox inbox(s.run.dir.string(), 0);
+  const auto got = inbox.take();
+  ASSERT_EQ(got.size(), 2u);
+  EXPECT_EQ(got[0].action, ControlRequest::Action::Pause);
+  EXPECT_EQ(got[1].action, ControlRequest::Action::Cadence);
+  EXPECT_DOUBLE_EQ(got[1].monitor_interval, 0.01);
+  EXPECT_TRUE(inbox.take().empty());  // taken once
+}
+
+TEST(Dashboard, AFinishedRunTakesNoControl) {
+  Served s("finished", "completed");
+  EXPECT_EQ(post_control(s, R"({"action":"stop"})", &s.run.token), 409);
+  fs::remove(s.run.dir / "token");  // a run directory without a token: no control at all
+  EXPECT_EQ(post_control(s, R"({"action":"stop"})", &s.run.token), 403);
+}
+
+TEST(Dashboard, ServesOnlyTheRunsImagesExtractsAndRecords) {
+  Served s("paths");
+  EXPECT_EQ(status_of(s, "/run/images/phases/3d_000000.png"), 200);
+  EXPECT_EQ(status_of(s, "/run/extracts/particles_000000.vtp"), 200);
+  EXPECT_EQ(status_of(s, "/run/monitors.csv"), 200);
+  EXPECT_EQ(status_of(s, "/run/case.resolved.toml"), 200);
+  EXPECT_EQ(status_of(s, "/run/images/phases/none.png"), 404);
+  // The token, control requests, checkpoints, and anything outside: refused.
+  for (const char* p : {"/run/token", "/run/control/x.json", "/run/checkpoints/step_0000000010.ckpt", "/run/images/../token",
+                        "/run/images/%2e%2e/token", "/run/images/..%2ftoken", "/run/../../../etc/passwd",
+                        "/run/%2e%2e/%2e%2e/etc/passwd", "/run//etc/passwd", "/run/images/./phases/3d_000000.png",
+                        "/run/images", "/run/images\\..\\token"})
+    EXPECT_EQ(status_of(s, p), 403) << p;
+  // A link inside images/ that leads out of the run directory.
+  fs::create_symlink(s.run.dir / "token", s.run.dir / "images" / "phases" / "leak.png");
+  EXPECT_EQ(status_of(s, "/run/images/phases/leak.png"), 403);
+  // The static front-end directory does not exist here: / says so rather than failing.
+  EXPECT_EQ(status_of(s, "/../../etc/passwd"), 404);
+}
+
+TEST(Dashboard, MalformedRequestsGetFourHundredsAndTheServerCarriesOn) {
+  Served s("malformed");
+  for (const std::string raw : {std::string("GARBAGE\r\n\r\n"), std::string("GET\r\n\r\n"),
+                                std::string("GET /api/state HTTP/9.9\r\nHost: x\r\n\r\n"),
+                                std::string("POST /api/control HTTP/1.1\r\nContent-Length: 99999999\r\n\r\n"),
+                                std::string(10000, 'A') + "\r\n\r\n"}) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in a{};
+    a.sin_family = AF_INET, a.sin_port = htons(static_cast<uint16_t>(s.server.port())), a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a), 0);
+    ASSERT_GT(::send(fd, raw.data(), raw.size(), MSG_NOSIGNAL), 0);
+    ::shutdown(fd, SHUT_WR);
+    char buf[256] = {};
+    const auto n = ::recv(fd, buf, sizeof buf - 1, 0);
+    ::close(fd);
+    if (n > 0) EXPECT_TRUE(std::string(buf).rfind("HTTP/1.1 4", 0) == 0) << raw.substr(0, 40) << " -> " << buf;
+  }
+  EXPECT_EQ(status_of(s, "/api/state"), 200);
+  EXPECT_EQ(status_of(s, "/api/events?since=abc"), 400);
+}
+
+TEST(Dashboard, StateHoldsEverythingSoFar) {
+  Served s("state");
+  auto r = s.client().Get("/api/state");
+  ASSERT_TRUE(r);
+  const auto j = nlohmann::json::parse(r->body);
+  EXPECT_EQ(j["status"]["state"], "running");
+  EXPECT_EQ(j["columns"].size(), 3u);
+  EXPECT_EQ(j["rows"].size(), 2u);
+  ASSERT_EQ(j["frames"].size(), 1u);
+  EXPECT_EQ(j["frames"][0]["images"][0]["url"], "/run/images/phases/3d_000000.png");
+  ASSERT_EQ(j["extracts"].size(), 1u);
+  EXPECT_EQ(j["extracts"][0]["url"], "/run/extracts/particles_000000.vtp");
+  EXPECT_TRUE(j["control"].get<bool>());
+}
+
+// Reads an event stream until `want` appears in it (or `timeout`).
+std::string read_events(int port, const std::string& path, const std::string& want, std::chrono::milliseconds timeout,
+                        std::atomic<bool>* stop_early = nullptr) {
+  httplib::Client c("127.0.0.1", port);
+  c.set_read_timeout(std::chrono::duration_cast<std::chrono::seconds>(timeout).count() + 1, 0);
+  std::string got;
+  const auto end = std::chrono::steady_clock::now() + timeout;
+  c.Get(path.c_str(), [&](const char* data, size_t n) {
+    got.append(data, n);
+    return got.find(want) == std::string::npos && std::chrono::steady_clock::now() < end && !(stop_early && *stop_early);
+  });
+  return got;
+}
+
+TEST(Dashboard, ManyReadersGetTheNewRowsAndOneThatLeavesHarmsNone) {
+  Served s("readers");
+  // A reader that leaves at once (a closed tab).
+  read_events(s.server.port(), "/api/events?since=0", "event: status", std::chrono::milliseconds(3000));
+  constexpr int kReaders = 40;
+  std::vector<std::string> seen(kReaders);
+  std::vector<std::thread> readers;
+  for (int k = 0; k < kReaders; ++k)
+    readers.emplace_back([&, k] {
+      seen[k] = read_events(s.server.port(), "/api/events?since=0", "[20.0,0.002,", std::chrono::milliseconds(15000));
+    });
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  s.run.append_row("20,0.002,3e-7\n");
+  for (auto& t : readers) t.join();
+  for (int k = 0; k < kReaders; ++k) {
+    EXPECT_NE(seen[k].find("event: columns"), std::string::npos) << k;
+    EXPECT_NE(seen[k].find("event: frame"), std::string::npos) << k;
+    EXPECT_NE(seen[k].find("event: monitors\ndata: [[20.0,0.002,"), std::string::npos) << k << ": " << seen[k].substr(0, 300);
+  }
+  EXPECT_EQ(status_of(s, "/api/state"), 200);
+}
+
+TEST(Dashboard, EventsResumeAfterTheLastOneSeen) {
+  Served s("resume");
+  const std::string all = read_events(s.server.port(), "/api/events?since=0", "event: status", std::chrono::milliseconds(3000));
+  EXPECT_NE(all.find("id: 1\n"), std::string::npos);
+  s.run.set_state("paused");
+  const std::string later = read_events(s.server.port(), "/api/events?since=5", "paused", std::chrono::milliseconds(3000));
+  EXPECT_EQ(later.find("id: 1\n"), std::string::npos);  // nothing before event 6
+  EXPECT_NE(later.find("\"state\":\"paused\""), std::string::npos) << later;
+}
+
+TEST(RunWatcher, TakesOnlyCompleteLinesAndFramesOnceRecorded) {
+  FakeRun run("watcher");
+  RunWatcher w(run.dir.string());
+  w.poll();
+  EXPECT_EQ(w.snapshot()["rows"].size(), 2u);
+  run.append_row("20,0.0");  // half a row: not yet
+  w.poll();
+  EXPECT_EQ(w.snapshot()["rows"].size(), 2u);
+  run.append_row("02,3e-7\n");
+  w.poll();
+  ASSERT_EQ(w.snapshot()["rows"].size(), 3u);
+  EXPECT_DOUBLE_EQ(w.snapshot()["rows"][2][1].get<double>(), 0.002);
+  // An image on disk without its frames.csv row is not a frame yet (it may be half-written).
+  std::ofstream(run.dir / "images" / "phases" / "3d_000001.png") << "png";
+  w.poll();
+  EXPECT_EQ(w.snapshot()["frames"].size(), 1u);
+  std::ofstream(run.dir / "images" / "frames.csv", std::ios::app) << "1,20,0.002\n";
+  w.poll();
+  EXPECT_EQ(w.snapshot()["frames"].size(), 2u);
+}
+
+TEST(RunWatcher, ARunWhoseProcessIsGoneIsLost) {
+  FakeRun run("lost");
+  RunStatus s;
+  s.case_name = "fake", s.state = "running";
+  StatusFile(run.dir.string()).update(s, true);
+  auto j = nlohmann::json::parse(std::ifstream(run.dir / "status.json"));
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ASSERT_GT(child, 0);
+  ::waitpid(child, nullptr, 0);
+  j["pid"] = child;  // a process that has ended
+  std::ofstream(run.dir / "status.json") << j.dump();
+  RunWatcher w(run.dir.string());
+  w.poll();
+  EXPECT_EQ(w.snapshot()["status"]["state"], "lost");
+}
+
+TEST(RunControl, RequestsParseOrRefuseWithTheReason) {
+  EXPECT_EQ(control_request_from_json(nlohmann::json::parse(R"({"action":"resume"})")).action, ControlRequest::Action::Resume);
+  auto says = [](const char* text) {
+    try {
+      control_request_from_json(nlohmann::json::parse(text));
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(says(R"({"action":"jump"})").find("\"jump\""), std::string::npos);
+  EXPECT_NE(says(R"({"verb":"stop"})").find("action"), std::string::npos);
+  EXPECT_NE(says(R"({"action":"cadence","extract_interval":"soon"})").find("extract_interval"), std::string::npos);
+  // A request file the run cannot read is removed and reported, the others still taken.
+  FakeRun run("inbox");
+  post_control_request(run.dir.string(), ControlRequest{ControlRequest::Action::Stop});
+  std::ofstream(run.dir / "control" / "req_zzz.json") << "{broken";
+  std::vector<std::string> rejected;
+  const auto got = ControlInbox(run.dir.string(), 0).take(&rejected);
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(got[0].action, ControlRequest::Action::Stop);
+  ASSERT_EQ(rejected.size(), 1u);
+  EXPECT_NE(rejected[0].find("req_zzz.json"), std::string::npos);
+  EXPECT_TRUE(fs::is_empty(run.dir / "control"));
+  // The token is the owner's alone.
+  EXPECT_EQ(fs::status(run.dir / "token").permissions() & (fs::perms::group_all | fs::perms::others_all), fs::perms::none);
+}

@@ -1,0 +1,109 @@
+// The dashboard of a short real run, in a real browser: status updates, a new frame arrives, the
+// timeline moves, the 3D colouring changes, pause really pauses the solver, resume, stop (with a
+// final checkpoint); a second browser that closes does not stop the run.
+//   node tests/dashboard_live.mjs POREPSH_BINARY CASE WORKDIR
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import path from 'node:path';
+import { exited, launch, sleep, startPoresph, until } from './browser.mjs';
+
+const [binary, caseFile, work] = process.argv.slice(2);
+const out = path.join(work, 'live');
+fs.rmSync(out, { recursive: true, force: true });
+const status = () => JSON.parse(fs.readFileSync(path.join(out, 'status.json'), 'utf8'));
+
+const run = await startPoresph(binary, ['run', caseFile, '--out', out, '--serve', '0', '--pipeline', 'phases', '--quiet']);
+const browser = await launch();
+let failed = false;
+try {
+  const page = await browser.newPage({ viewport: { width: 1280, height: 1500 } });
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  page.on('dialog', (d) => d.accept());
+  await page.goto(run.url);
+  const text = (sel) => page.locator(sel).textContent();
+
+  // Status: the case, the backend, a running state whose step advances.
+  await until('state running', async () => (await text('#state')) === 'running');
+  assert.equal(await text('#case-name'), 'dashboard_live');
+  assert.match(await text('#device'), /^cpu · /);
+  const step0 = Number(await text('#step'));
+  await until('the step to advance', async () => Number(await text('#step')) > step0);
+  console.log(`status updates: step ${step0} -> ${await text('#step')}`);
+
+  // A frame pushed after the page loaded, shown at once (the timeline follows the run).
+  const framesAtLoad = await page.evaluate(() => window.dashboard.frames.frames.length);
+  await until('a new frame', async () => (await page.evaluate(() => window.dashboard.frames.frames.length)) > framesAtLoad + 1);
+  const latest = await page.evaluate(() => window.dashboard.frames.frames.length - 1);
+  await until('the newest frame on show', async () => (await text('#frame-label')).startsWith(`frame ${latest} `));
+  await until('its image loaded', () => page.evaluate(() => [...document.querySelectorAll('#images img')].every((i) => i.complete && i.naturalWidth > 0)));
+  console.log(`frames: ${framesAtLoad} at load, ${latest + 1} later`);
+
+  // Timeline back to the first frame.
+  await page.locator('#timeline').focus();
+  await page.keyboard.press('Home');
+  assert.match(await text('#frame-label'), /^frame 0 · step 0 /);
+  assert.match(await page.locator('#images img').first().getAttribute('src'), /_000000\.png$/);
+
+  // The 3D view: colour by another field; the legend and the picture change.
+  await until('an extract in the 3D view', async () => (await text('#legend')).includes('particles'));
+  const before = await page.locator('#view3d').screenshot();
+  const fields = await page.locator('#field-select option').allTextContents();
+  assert.ok(fields.includes('velocity') && fields.includes('pressure'), fields.join());
+  const other = (await page.locator('#field-select').inputValue()) === 'velocity' ? 'pressure' : 'velocity';
+  await page.locator('#field-select').selectOption(other);
+  assert.equal(await page.locator('#legend').getAttribute('data-field'), other);
+  assert.match(await text('#legend'), new RegExp(`^${other}: `));
+  await sleep(300);
+  assert.notDeepEqual(await page.locator('#view3d').screenshot(), before, 'the 3D view did not change with the field');
+  // Hiding a phase leaves fewer particles.
+  const count = async () => Number((await text('#legend')).match(/· (\d+) of/)[1]);
+  const all = await count();
+  await page.locator('#phases input').first().uncheck();
+  assert.ok((await count()) < all, 'hiding a phase kept every particle');
+  await page.locator('#phases input').first().check();
+
+  // A second browser comes and goes: the run carries on.
+  const other_ = await browser.newContext();
+  const p2 = await other_.newPage();
+  await p2.goto(run.url);
+  await until('the second page to connect', async () => (await p2.locator('#state').textContent()) === 'running');
+  await other_.close();
+  const s1 = status().step;
+  await until('the run to go on without the second browser', async () => status().step > s1 + 5);
+
+  // Pause: the solver's own step count stops.
+  await page.locator('#pause').click();
+  await until('state paused', async () => (await text('#state')) === 'paused');
+  const paused = status().step;
+  await sleep(1500);
+  assert.equal(status().step, paused, 'the solver went on while paused');
+  assert.equal(status().state, 'paused');
+  assert.equal(Number(await text('#step')), paused);
+  console.log(`paused at step ${paused}, still there 1.5 s later`);
+
+  // Resume: it goes on.
+  await page.locator('#resume').click();
+  await until('state running again', async () => (await text('#state')) === 'running');
+  await until('the step to advance after resume', async () => status().step > paused);
+
+  // Stop: the final state reaches the page, the solver exits cleanly with a last checkpoint.
+  await page.locator('#stop').click();
+  await until('state stopped', async () => (await text('#state')) === 'stopped', 30000);
+  assert.equal(await exited(run.child), 0);
+  const final = status();
+  assert.equal(final.state, 'stopped');
+  const ckpts = fs.readdirSync(path.join(out, 'checkpoints'));
+  assert.ok(ckpts.includes(`step_${String(final.step).padStart(10, '0')}.ckpt`), `no final checkpoint at step ${final.step}: ${ckpts}`);
+  assert.equal(JSON.parse(fs.readFileSync(path.join(out, 'summary.json'), 'utf8')).status, 'stopped');
+  assert.deepEqual(errors, []);
+  console.log(`stopped at step ${final.step} with a checkpoint`);
+} catch (e) {
+  failed = true;
+  console.error(e);
+  console.error(run.output().slice(-3000));
+} finally {
+  await browser.close();
+  if (run.child.exitCode === null) run.child.kill('SIGKILL');
+}
+process.exit(failed ? 1 : 0);
