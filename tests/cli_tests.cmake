@@ -56,7 +56,7 @@ execute_process(COMMAND ${PORESPH} run ${WORK}/short.toml --out ${WORK}/short_ru
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "short run exited ${rc}: ${o}${err}")
 endif()
-foreach(f case.resolved.toml log.txt monitors.csv summary.json extracts images checkpoints)
+foreach(f case.resolved.toml log.txt monitors.csv summary.json extracts images checkpoints status.json token)
   if(NOT EXISTS ${WORK}/short_run/${f})
     message(FATAL_ERROR "run directory lacks ${f}")
   endif()
@@ -65,6 +65,23 @@ file(READ ${WORK}/short_run/summary.json summary)
 if(NOT summary MATCHES "\"status\": \"completed\"")
   message(FATAL_ERROR "summary.json does not say completed: ${summary}")
 endif()
+file(READ ${WORK}/short_run/status.json st)
+if(NOT st MATCHES "\"state\": \"completed\"")
+  message(FATAL_ERROR "status.json does not say completed: ${st}")
+endif()
+
+# The dashboard: a port that cannot be had, or a directory that is no run, is refused before
+# anything is written (exit 2, no run directory).
+execute_process(COMMAND ${PORESPH} run ${WORK}/short.toml --out ${WORK}/serve_bad --serve 0 --bind 10.255.255.254
+                RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "cannot listen" OR EXISTS ${WORK}/serve_bad)
+  message(FATAL_ERROR "--bind to a foreign address: exit ${rc}, expected 2 without a run directory: ${err}")
+endif()
+execute_process(COMMAND ${PORESPH} serve ${WORK} RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "not a run directory")
+  message(FATAL_ERROR "serve on a directory that is no run: exit ${rc}, expected 2: ${err}")
+endif()
+
 file(STRINGS ${WORK}/short_run/monitors.csv mon)
 list(LENGTH mon nmon)
 if(nmon LESS 3)

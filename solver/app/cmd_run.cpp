@@ -84,6 +84,10 @@ int drive(Case& c, const RunOptions& opt) {
     std::cerr << "poresph: " << e.what() << "\n";
     return 2;
   }
+  if (opt.serve >= 0 && !dashboard_available()) {
+    std::cerr << "poresph: --serve: this poresph was built without the dashboard (cpp-httplib was not found at build time)\n";
+    return 2;
+  }
   const std::string dir = opt.out.empty() ? default_run_directory(c.name) : opt.out;
   std::unique_ptr<RunDirectory> rd;
   try {
@@ -164,6 +168,27 @@ int drive(Case& c, const RunOptions& opt) {
   };
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();  // the wall time includes Catalyst's start-up and first frame
+  RunStatus base;
+  base.case_name = c.name, base.backend = engine->backend(), base.device = engine->device();
+  base.precision = precision_name(), base.dimension = c.scene.dimension, base.particles = engine->particles();
+  base.end_time = t_end, base.extracts = extracts, base.pipelines = insitu->active();
+  base.monitor_interval = dt_mon, base.extract_interval = dt_ext, base.visualisation_interval = dt_vis;
+  RunSupervision supervision(rd->path(), base);
+  auto wall_now = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
+  supervision.report(*engine, "starting", wall_now(), true);
+  std::unique_ptr<DashboardServer> dashboard;
+  if (opt.serve >= 0) {
+    try {
+      dashboard = std::make_unique<DashboardServer>(DashboardOptions{rd->path(), "", opt.bind, opt.serve});
+    } catch (const std::exception& e) {  // nothing has run: no run directory is left
+      std::cerr << "poresph: " << e.what() << "\n";
+      rd.reset();
+      std::filesystem::remove_all(dir);
+      return 2;
+    }
+    rd->log("dashboard: " + dashboard->url() + "?token=" + supervision.token() + " (the token, also in " + rd->path() +
+            "/token, is needed to pause, resume or stop)");
+  }
   monitor();
   if (extracts) writer.write(*engine);
   if (insitu->active()) {
@@ -175,26 +200,6 @@ int drive(Case& c, const RunOptions& opt) {
     }
   }
 
-  RunStatus base;
-  base.case_name = c.name, base.backend = engine->backend(), base.device = engine->device();
-  base.precision = precision_name(), base.dimension = c.scene.dimension, base.particles = engine->particles();
-  base.end_time = t_end, base.extracts = extracts, base.pipelines = insitu->active();
-  base.monitor_interval = dt_mon, base.extract_interval = dt_ext, base.visualisation_interval = dt_vis;
-  RunSupervision supervision(rd->path(), base);
-  auto wall_now = [&] { return std::chrono::duration<double>(clock::now() - t0).count(); };
-  supervision.report(*engine, "running", wall_now(), true);
-  std::unique_ptr<DashboardServer> dashboard;
-  if (opt.serve >= 0) {
-    try {
-      dashboard = std::make_unique<DashboardServer>(DashboardOptions{rd->path(), "", opt.bind, opt.serve});
-    } catch (const std::exception& e) {
-      rd->log(std::string("failed: dashboard: ") + e.what());
-      supervision.finish(*engine, "failed", std::string("dashboard: ") + e.what(), wall_now());
-      return 2;
-    }
-    rd->log("dashboard: " + dashboard->url() + "?token=" + supervision.token() + " (the token, also in " + rd->path() +
-            "/token, is needed to pause, resume or stop)");
-  }
   // Requests from the dashboard (dashboard/run_control.hpp): pause until resumed, stop, cadence.
   bool paused = false, stop = false;
   auto take_requests = [&] {

@@ -1,6 +1,6 @@
 // The dashboard of a short real run, in a real browser: status updates, a new frame arrives, the
-// timeline moves, the 3D colouring changes, pause really pauses the solver, resume, stop (with a
-// final checkpoint); a second browser that closes does not stop the run.
+// timeline moves, the 3D colouring changes, pause really pauses the solver, resume, the output
+// cadence changes, stop (with a final checkpoint); a second browser that closes does not stop the run.
 //   node tests/dashboard_live.mjs POREPSH_BINARY CASE WORKDIR
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
@@ -86,6 +86,18 @@ try {
   await page.locator('#resume').click();
   await until('state running again', async () => (await text('#state')) === 'running');
   await until('the step to advance after resume', async () => status().step > paused);
+
+  // Output cadence: monitors every 5 ms from now on (the case says 2 ms).
+  await page.locator('#controls summary').click();
+  await page.locator('#cad-monitor').fill('0.005');
+  await page.locator('#cadence').click();
+  await until('the new monitor interval', async () => status().monitor_interval === 0.005);
+  const since = status().time;
+  const times = () => fs.readFileSync(path.join(out, 'monitors.csv'), 'utf8').trim().split('\n').slice(1)
+    .map((l) => Number(l.split(',')[1])).filter((t) => t > since + 1e-9);
+  await until('two monitor rows at the new cadence', async () => times().length >= 2, 60000);
+  const [t1, t2] = times();
+  assert.ok(Math.abs(t2 - t1 - 0.005) < 1e-9, `monitor rows ${t1}, ${t2}: not 5 ms apart`);
 
   // Stop: the final state reaches the page, the solver exits cleanly with a last checkpoint.
   await page.locator('#stop').click();
