@@ -1,6 +1,7 @@
 // The dashboard of a short real run, in a real browser: status updates, a new frame arrives, the
 // timeline moves, the 3D colouring changes, pause really pauses the solver, resume, the output
-// cadence changes, stop (with a final checkpoint); a second browser that closes does not stop the run.
+// cadence changes, stop (with a final checkpoint); a second browser that closes does not stop the
+// run; `poresph serve` attached from another process shows it and controls it.
 //   node tests/dashboard_live.mjs POREPSH_BINARY CASE WORKDIR
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
@@ -45,6 +46,17 @@ try {
   assert.match(await text('#frame-label'), /^frame 0 · step 0 /);
   assert.match(await page.locator('#images img').first().getAttribute('src'), /_000000\.png$/);
 
+  // Play the sequence from the first frame.
+  await page.locator('#play').click();
+  await until('the sequence to play', async () => !(await text('#frame-label')).startsWith('frame 0 '), 10000);
+  await page.locator('#play').click();
+
+  // Charts: the monitors' groups, growing as rows arrive.
+  const groups = await page.locator('#charts .chart').evaluateAll((els) => els.map((e) => e.dataset.group));
+  assert.ok(groups.includes('Energies (J)') && groups.includes('Saturations'), groups.join());
+  const rows = await page.evaluate(() => window.dashboard.charts.rows.length);
+  await until('new monitor rows on the charts', async () => (await page.evaluate(() => window.dashboard.charts.rows.length)) > rows);
+
   // The 3D view: colour by another field; the legend and the picture change.
   await until('an extract in the 3D view', async () => (await text('#legend')).includes('particles'));
   const before = await page.locator('#view3d').screenshot();
@@ -62,6 +74,35 @@ try {
   await page.locator('#phases input').first().uncheck();
   assert.ok((await count()) < all, 'hiding a phase kept every particle');
   await page.locator('#phases input').first().check();
+  // A slab keeps a band of them.
+  await page.locator('#slab-axis').selectOption('y');
+  await page.locator('#slab-on').check();
+  const slab = await count();
+  assert.ok(slab > 0 && slab < all / 2, `the slab kept ${slab} of ${all}`);
+  await page.locator('#slab-on').uncheck();
+
+  // `poresph serve` attached from another process: the same state, and control through it.
+  const attached = await startPoresph(binary, ['serve', out, '--port', '0']);
+  try {
+    const base = attached.url.replace(/\?token=.*/, '');
+    const token = attached.url.replace(/.*token=/, '');
+    const st = await (await fetch(`${base}api/state`)).json();
+    assert.equal(st.status.state, 'running');
+    assert.equal(st.status.case, 'dashboard_live');
+    const post = (action, t) => fetch(`${base}api/control`, {
+      method: 'POST', headers: { 'X-Poresph-Token': t }, body: JSON.stringify({ action }),
+    });
+    assert.equal((await post('pause', 'wrong')).status, 403);
+    assert.equal((await post('pause', token)).status, 202);
+    await until('the run paused from the attached server', async () => status().state === 'paused');
+    await until('the page to see it', async () => (await text('#state')) === 'paused');
+    assert.equal((await post('resume', token)).status, 202);
+    await until('the run running again', async () => status().state === 'running');
+    await until('the page to see it', async () => (await text('#state')) === 'running');
+  } finally {
+    attached.child.kill('SIGTERM');
+    assert.equal(await exited(attached.child), 0);
+  }
 
   // A second browser comes and goes: the run carries on.
   const other_ = await browser.newContext();
