@@ -248,6 +248,22 @@ TEST(RunWatcher, ARunWhoseProcessIsGoneIsLost) {
   EXPECT_EQ(w.snapshot()["status"]["state"], "lost");
 }
 
+TEST(RunWatcher, AnOlderRunDirectoryShowsItsSummary) {
+  FakeRun run("summary");
+  fs::remove(run.dir / "status.json");
+  RunWatcher w(run.dir.string());
+  w.poll();
+  EXPECT_TRUE(w.snapshot()["status"].is_null());  // neither file: no status yet
+  std::ofstream(run.dir / "summary.json") << R"({"case": "old", "status": "completed", "backend": "cpu", "device": "x",
+    "precision": "double", "dimension": 2, "particles": 208, "steps": 1600, "time": 0.5, "end_time": 0.5,
+    "wall_seconds": 1.5, "particle_steps_per_second": 2e5})";
+  w.poll();
+  const auto st = w.snapshot()["status"];
+  EXPECT_EQ(st["state"], "completed");
+  EXPECT_EQ(st["case"], "old");
+  EXPECT_EQ(st["step"], 1600);
+}
+
 TEST(RunControl, RequestsParseOrRefuseWithTheReason) {
   EXPECT_EQ(control_request_from_json(nlohmann::json::parse(R"({"action":"resume"})")).action, ControlRequest::Action::Resume);
   auto says = [](const char* text) {

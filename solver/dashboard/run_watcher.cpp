@@ -73,11 +73,22 @@ void RunWatcher::poll() {
   cv_.notify_all();
 }
 
+// A run directory from before status.json: its final state from summary.json (throws without one).
+nlohmann::json RunWatcher::status_of_summary() const {
+  const nlohmann::json m = nlohmann::json::parse(read_file(fs::path(dir_) / "summary.json"));
+  RunStatus s;
+  s.state = m.at("status"), s.case_name = m.at("case"), s.backend = m.at("backend"), s.device = m.at("device");
+  s.precision = m.at("precision"), s.dimension = m.at("dimension"), s.particles = m.at("particles");
+  s.step = m.at("steps"), s.time = m.at("time"), s.end_time = m.at("end_time"), s.elapsed = m.at("wall_seconds");
+  s.time_left = 0;
+  return to_json(s);
+}
+
 void RunWatcher::poll_status() {
   const std::string text = read_file(fs::path(dir_) / "status.json");
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(text);
+    j = text.empty() ? status_of_summary() : nlohmann::json::parse(text);
     status_from_json(j);  // complete and well-typed
   } catch (const std::exception&) {
     return;  // none yet

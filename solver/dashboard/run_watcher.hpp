@@ -1,6 +1,7 @@
 #pragma once
 // The dashboard's view of a run directory, read from the files the run writes (so that the same
-// code serves a run in this process, one in another process, and a finished one): status.json,
+// code serves a run in this process, one in another process, and a finished one): status.json
+// (or, for a run directory older than it, summary.json),
 // monitors.csv (complete lines only), images/frames.csv (a row once a frame's images are written)
 // with the images/<pipeline>/<view>_<frame>.png files, and extracts/particles.pvd. Each poll turns
 // what is new into numbered events; a client gets the whole state once, then the events after it.
@@ -38,6 +39,7 @@ class RunWatcher {
  private:
   void emit(const std::string& type, nlohmann::json data);  // mutex held
   void poll_status();
+  nlohmann::json status_of_summary() const;
   void poll_monitors();
   void poll_frames();
   void poll_extracts();
