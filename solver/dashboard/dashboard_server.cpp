@@ -11,6 +11,10 @@
 #include <stdexcept>
 #include <thread>
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
 #include "dashboard/run_control.hpp"
 #include "dashboard/run_status.hpp"
 #include "dashboard/run_watcher.hpp"
@@ -74,6 +78,12 @@ std::string not_built_page() {
          "(web/, needs npm at build time). The run's state is at <a href=\"/api/state\">/api/state</a>.</p>";
 }
 
+// The server's threads yield to the solver's (Linux: niceness is per thread): once per thread.
+void lower_priority() {
+  thread_local bool done = false;
+  if (!done) done = true, ::setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 19);
+}
+
 void json_error(httplib::Response& res, int code, const std::string& msg) {
   res.status = code;
   res.set_content(nlohmann::json{{"error", msg}}.dump(), "application/json");
@@ -87,6 +97,7 @@ struct DashboardServer::Impl {
   RunWatcher watcher;
   std::thread serve_thread, poll_thread;
   std::atomic<bool> stopping{false};
+  std::atomic<int> streams{0};  // open event streams: the run directory is watched only for them
   int port = 0;
 
   explicit Impl(const DashboardOptions& o) : opt(o), watcher(o.run_dir) {}
@@ -102,6 +113,7 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
   else d.http.Get("/", [](const httplib::Request&, httplib::Response& res) { res.set_content(not_built_page(), "text/html"); });
 
   d.http.Get("/api/state", [&d](const httplib::Request&, httplib::Response& res) {
+    d.watcher.poll();  // fresh, also when no stream keeps the watcher going
     nlohmann::json s = d.watcher.snapshot();
     s["control"] = !read_run_token(d.opt.run_dir).empty();
     res.set_header("Cache-Control", "no-store");
@@ -119,6 +131,8 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
     }
     res.set_header("Cache-Control", "no-store");
     auto last = std::make_shared<long>(since);
+    d.watcher.poll();
+    ++d.streams;
     res.set_chunked_content_provider("text/event-stream", [&d, last](size_t, httplib::DataSink& sink) {
       const bool ending = d.stopping || d.watcher.stopped();
       // Sleeps until an event (or the server's stop) wakes it, at most 15 s: then a comment keeps
@@ -133,7 +147,7 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
       if (!out.empty() && !sink.write(out.data(), out.size())) return false;  // the browser left
       if (ending) sink.done();  // the run's last events are out
       return true;
-    });
+    }, [&d](bool) { --d.streams; });
   });
 
   d.http.Post("/api/control", [&d](const httplib::Request& req, httplib::Response& res) {
@@ -150,6 +164,7 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
     } catch (const std::invalid_argument& e) {
       return json_error(res, 400, e.what());
     }
+    d.watcher.poll();
     const nlohmann::json st = d.watcher.snapshot()["status"];
     if (st.is_null() || !(st["state"] == "starting" || st["state"] == "running" || st["state"] == "paused"))
       return json_error(res, 409, "the run is not running (state " + (st.is_null() ? std::string("unknown") : st["state"].get<std::string>()) + ")");
@@ -175,6 +190,10 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
   d.http.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
     json_error(res, 500, "internal error");
   });
+  d.http.set_pre_routing_handler([](const httplib::Request&, httplib::Response&) {
+    lower_priority();
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
   d.http.set_payload_max_length(64 * 1024);
   d.http.set_keep_alive_timeout(2);  // idle connections do not hold a stop back
 
@@ -188,11 +207,15 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
                                std::to_string(opt.port) + " (in use, or not an address of this machine)");
     d.port = opt.port;
   }
-  d.serve_thread = std::thread([&d] { d.http.listen_after_bind(); });
+  d.serve_thread = std::thread([&d] {
+    lower_priority();
+    d.http.listen_after_bind();
+  });
   d.poll_thread = std::thread([&d] {
+    lower_priority();
     while (!d.stopping) {
       std::this_thread::sleep_for(std::chrono::duration<double>(d.opt.poll_period));
-      d.watcher.poll();
+      if (d.streams > 0) d.watcher.poll();
     }
   });
 }
