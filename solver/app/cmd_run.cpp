@@ -196,6 +196,7 @@ int drive(Case& c, const RunOptions& opt) {
       insitu->start(*engine, c, rd->path(), [&](const std::string& l) { rd->log(l); });
     } catch (const std::exception& e) {
       rd->log(std::string("failed: in-situ visualisation: ") + e.what());
+      supervision.finish(*engine, "failed", std::string("in-situ visualisation: ") + e.what(), wall_now());
       return 4;
     }
   }

@@ -195,7 +195,10 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
     return httplib::Server::HandlerResponse::Unhandled;
   });
   d.http.set_payload_max_length(64 * 1024);
-  d.http.set_keep_alive_timeout(2);  // idle connections do not hold a stop back
+  // cpp-httplib wakes every 10 ms in its accept loop and on idle keep-alive connections, each
+  // wake-up a preemption of the solver's threads: block in accept, one request per connection.
+  d.http.set_idle_interval(0, 0);
+  d.http.set_keep_alive_max_count(1);
 
   d.watcher.poll();
   if (opt.port == 0) {

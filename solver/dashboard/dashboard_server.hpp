@@ -22,7 +22,7 @@ struct DashboardOptions {
   std::string web_dir;             // the built front-end; "" = the build's (web_directory())
   std::string bind = "127.0.0.1";
   int port = 8080;                 // 0: any free port
-  double poll_period = 0.5;        // s, between looks at the run directory
+  double poll_period = 1.0;        // s, between looks at the run directory (each wakes every stream)
   int threads = 64;                // each event stream holds one
 };
 

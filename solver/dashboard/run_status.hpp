@@ -35,7 +35,7 @@ RunStatus status_from_json(const nlohmann::json& j);
 
 class StatusFile {
  public:
-  StatusFile(std::string run_dir, double period = 0.5);
+  StatusFile(std::string run_dir, double period = 1.0);
   // True when `period` has passed since the last write (the caller then builds and passes a status).
   bool due() const;
   // Writes when the state changed or `period` has passed since the last write (or `force`).
