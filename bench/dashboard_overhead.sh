@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The dashboard's cost to the solver: the same run (CASE shortened to 0.03 s) without a server,
+# The dashboard's cost to the solver: the same run (CASE shortened to END, default 0.03 s) without a server,
 # with `--serve` and nobody reading, and with `--serve` and readers (3 event streams, as three
 # open pages, and a client fetching /api/state every 2 s, on the same machine), alternated
 # REPEATS times; prints each run's particle-steps per second and the medians.
@@ -10,7 +10,7 @@ case_file=${2:-$(dirname "$0")/../cases/drainage_2d.toml}
 repeats=${3:-5}
 work=$(mktemp -d)
 trap 'kill $(jobs -p) 2>/dev/null || true; rm -rf "$work"' EXIT
-sed 's/^end = .*/end = 0.03/' "$case_file" > "$work/case.toml"
+sed "s/^end = .*/end = ${END:-0.03}/" "$case_file" > "$work/case.toml"
 rate() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['particle_steps_per_second'])" "$1/summary.json"; }
 plain=() idle=() read=()
 for k in $(seq "$repeats"); do
