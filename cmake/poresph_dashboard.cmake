@@ -1,5 +1,5 @@
 # The browser dashboard: the HTTP server needs cpp-httplib (Debian's libcpp-httplib-dev), the
-# front-end npm (web/, built with Vite into <build>/web/dist). AUTO builds what it finds; the
+# front-end npm and Node.js >= 20.19 (web/, built with Vite into <build>/web/dist). AUTO builds what it finds; the
 # solver-only configuration (a GPU machine without Debian's -dev packages) builds neither.
 set(PORESPH_DASHBOARD AUTO CACHE STRING "Build the browser dashboard (server and front-end): AUTO, ON or OFF")
 set(PORESPH_HAVE_HTTPLIB OFF)
@@ -7,15 +7,24 @@ set(PORESPH_HAVE_WEB OFF)
 if(NOT PORESPH_DASHBOARD STREQUAL "OFF")
   pkg_check_modules(HTTPLIB QUIET IMPORTED_TARGET cpp-httplib)
   find_program(PORESPH_NPM npm)
+  find_program(PORESPH_NODE node)
+  set(PORESPH_NODE_VERSION 0)
+  if(PORESPH_NODE)
+    execute_process(COMMAND ${PORESPH_NODE} --version OUTPUT_VARIABLE PORESPH_NODE_VERSION OUTPUT_STRIP_TRAILING_WHITESPACE)
+    string(REGEX REPLACE "^v" "" PORESPH_NODE_VERSION "${PORESPH_NODE_VERSION}")
+  endif()
   if(HTTPLIB_FOUND)
     set(PORESPH_HAVE_HTTPLIB ON)
   elseif(PORESPH_DASHBOARD STREQUAL "ON")
     message(FATAL_ERROR "PORESPH_DASHBOARD=ON but cpp-httplib was not found (apt-get install libcpp-httplib-dev)")
   endif()
-  if(PORESPH_HAVE_HTTPLIB AND PORESPH_NPM)
+  # Vite 8 needs Node.js 20.19 or newer (Debian 12's own nodejs is 18).
+  if(PORESPH_HAVE_HTTPLIB AND PORESPH_NPM AND PORESPH_NODE_VERSION VERSION_GREATER_EQUAL 20.19)
     set(PORESPH_HAVE_WEB ON)
   elseif(PORESPH_DASHBOARD STREQUAL "ON")
-    message(FATAL_ERROR "PORESPH_DASHBOARD=ON but npm was not found")
+    message(FATAL_ERROR "PORESPH_DASHBOARD=ON but npm and Node.js >= 20.19 were not found (node: ${PORESPH_NODE_VERSION})")
+  elseif(PORESPH_HAVE_HTTPLIB)
+    message(WARNING "the dashboard's front-end is not built: it needs npm and Node.js >= 20.19 (node: ${PORESPH_NODE_VERSION})")
   endif()
 endif()
 message(STATUS "poresph dashboard: server ${PORESPH_HAVE_HTTPLIB}, front-end ${PORESPH_HAVE_WEB}")
