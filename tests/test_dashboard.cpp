@@ -91,6 +91,7 @@ TEST(Dashboard, ControlNeedsTheRunsToken) {
   EXPECT_EQ(post_control(s, R"({"action":"cadence","monitor_interval":-1})", &s.run.token), 400);
   EXPECT_EQ(post_control(s, R"({"action":"cadence"})", &s.run.token), 400);
   EXPECT_EQ(post_control(s, R"([1,2])", &s.run.token), 400);
+  EXPECT_EQ(post_control(s, R"({"action":"cadence","monitor_interval":1e-300})", &s.run.token), 400);  // under the floor
   // The run takes exactly the two good ones, in order.
   ControlInbox inbox(s.run.dir.string(), 0);
   const auto got = inbox.take();
@@ -128,6 +129,19 @@ TEST(Dashboard, ServesOnlyTheRunsImagesExtractsAndRecords) {
   EXPECT_EQ(status_of(s, "/../../etc/passwd"), 404);
 }
 
+TEST(Dashboard, OnLoopbackOnlyRequestsNamingItAreAnswered) {
+  Served s("host");
+  httplib::Client c = s.client();
+  for (const char* host : {"evil.example", "evil.example:80", "127.0.0.1:1", "127.0.0.1"}) {
+    auto r = c.Get("/api/state", httplib::Headers{{"Host", host}});
+    ASSERT_TRUE(r) << host;
+    EXPECT_EQ(r->status, 403) << host;
+  }
+  auto r = c.Get("/api/state", httplib::Headers{{"Host", "localhost:" + std::to_string(s.server.port())}});
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+}
+
 TEST(Dashboard, MalformedRequestsGetFourHundredsAndTheServerCarriesOn) {
   Served s("malformed");
   for (const std::string raw : {std::string("GARBAGE\r\n\r\n"), std::string("GET\r\n\r\n"),
@@ -158,9 +172,9 @@ TEST(Dashboard, StateHoldsEverythingSoFar) {
   EXPECT_EQ(j["columns"].size(), 3u);
   EXPECT_EQ(j["rows"].size(), 2u);
   ASSERT_EQ(j["frames"].size(), 1u);
-  EXPECT_EQ(j["frames"][0]["images"][0]["url"], "/run/images/phases/3d_000000.png");
+  EXPECT_EQ(j["frames"][0]["images"][0]["url"], "run/images/phases/3d_000000.png");  // relative: behind a prefix too
   ASSERT_EQ(j["extracts"].size(), 1u);
-  EXPECT_EQ(j["extracts"][0]["url"], "/run/extracts/particles_000000.vtp");
+  EXPECT_EQ(j["extracts"][0]["url"], "run/extracts/particles_000000.vtp");
   EXPECT_TRUE(j["control"].get<bool>());
 }
 

@@ -36,7 +36,7 @@ TEST(ConcentricLayout, ShellsTileTheBallAndKeepParticlesApart) {
       volume += q.volume;
       double r2 = 0;
       for (int k = 0; k < D; ++k) x.push_back(q.x[k]), r2 += std::pow(q.x[k] - (k == 0 ? 0.5 : k == 1 ? -1.0 : 2.0), 2);
-      const double shell = std::sqrt(r2) - 0.5;  // radii (k + 1/2) spacings
+      const double shell = std::sqrt(r2) - 0.5;  // radii (k + 1/2) spacings (10 is a whole number of them)
       EXPECT_NEAR(shell, std::round(shell), 1e-9) << "D = " << D;
       // Every particle stands for about a spacing^D: no shell crowded or sparse.
       EXPECT_GT(q.volume, 0.95) << "D = " << D;
@@ -106,6 +106,31 @@ TEST(ConcentricLayout, ACoreOfAnotherMaterialFillsItsShells) {
   EXPECT_NEAR(area[0], M_PI * 84e-6, 1e-12);
 }
 
+TEST(ConcentricLayout, ARadiusBetweenSpacingsEndsOnTheSurface) {
+  // A concentric disc of 10.4 or 10.6 spacings in lattice water: its shells stretch or squeeze to
+  // end on its surface (its area exact), and the lattice outside keeps clear of its last ring.
+  for (const char* radius : {"0.0104", "0.0106"}) {
+    std::string t = test::replaced(kRing, "radius = 0.01\nmaterial = \"clay\"", std::string("radius = ") + radius + "\nmaterial = \"clay\"");
+    t = test::replaced(t, "upper = [0.012, 0.012]", "upper = [0.014, 0.014]");
+    t = test::replaced(t, "lower = [-0.012, -0.012]", "lower = [-0.014, -0.014]");
+    t = test::replaced(t, "shape = \"sphere\"\ncenter = [0.0, 0.0]\nradius = 0.004\nmaterial = \"water\"\nlayout = \"concentric\"", "shape = \"box\"\nlower = [-0.014, -0.014]\nupper = [0.014, 0.014]\nmaterial = \"water\"");
+    // The water box first, the disc over it.
+    const auto w = t.find("[[geometry]]\nshape = \"box\"");
+    ASSERT_NE(w, std::string::npos);
+    t = t.substr(0, t.find("[[geometry]]")) + t.substr(w) + "\n" + t.substr(t.find("[[geometry]]"), w - t.find("[[geometry]]"));
+    Case c = load_case_text(t, "disc.toml");
+    build_particles(c);
+    const Scene& sc = c.scene;
+    const double n_sum = lattice_kernel_sum(2, sc.options.kernel, sc.options.support_radius, 1e-3), R = std::stod(radius);
+    double area = 0;
+    for (int i = 0; i < sc.count(); ++i) {
+      if (sc.material[i] == 0) area += sc.mass[i] * n_sum * 1e-6 / sc.materials[0].props.rest_density;
+      EXPECT_GT(nearest(sc.x, 2, i), 0.45e-3) << radius;
+    }
+    EXPECT_NEAR(area, M_PI * R * R, 1e-12) << radius;
+  }
+}
+
 TEST(ConcentricLayout, LaterShapesAndTheDomainEdgeClipIt) {
   // A box of water over the ring's right half takes it; the domain cuts the ring's top.
   std::string t = test::replaced(kRing, "upper = [0.012, 0.012]", "upper = [0.012, 0.006]");
@@ -127,4 +152,8 @@ TEST(ConcentricLayout, OnlySpheresTakeALayout) {
   EXPECT_NE(msg.find("layout"), std::string::npos) << msg;
   EXPECT_NE(test::error_of(test::replaced(kRing, "layout = \"concentric\"", "layout = \"hexagonal\"")).find("lattice"),
             std::string::npos);
+  // Across a periodic seam: refused.
+  const std::string seam = test::error_of(test::replaced(kRing, "upper = [0.012, 0.012]", "upper = [0.009, 0.012]\nperiodic = [true, false]"));
+  EXPECT_NE(seam.find("periodic"), std::string::npos) << seam;
+  EXPECT_NE(seam.find("geometry[0]"), std::string::npos) << seam;
 }

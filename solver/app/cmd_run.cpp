@@ -186,8 +186,9 @@ int drive(Case& c, const RunOptions& opt) {
       std::filesystem::remove_all(dir);
       return 2;
     }
-    rd->log("dashboard: " + dashboard->url() + "?token=" + supervision.token() + " (the token, also in " + rd->path() +
-            "/token, is needed to pause, resume or stop)");
+    // The token goes to the terminal only: log.txt is served to anyone who can reach the port.
+    rd->log("dashboard: " + dashboard->url() + " (to pause, resume or stop: the token in " + rd->path() + "/token)");
+    std::cout << "dashboard with control: " << dashboard->url() << "?token=" << supervision.token() << std::endl;
   }
   monitor();
   if (extracts) writer.write(*engine);
@@ -210,7 +211,13 @@ int drive(Case& c, const RunOptions& opt) {
       else if (r.action == A::Resume && paused) paused = false, rd->log("resumed at step " + std::to_string(engine->steps()));
       else if (r.action == A::Stop) stop = true;
       else if (r.action == A::Cadence) {
-        const double t = engine->time();
+        const double t = engine->time(), shortest = cadence_floor(engine->last_dt(), t_end);
+        bool too_short = false;
+        for (double v : {r.monitor_interval, r.extract_interval, r.visualisation_interval}) too_short |= v > 0 && v < shortest;
+        if (too_short) {
+          rd->log("output cadence: ignored a request for an interval under " + std::to_string(shortest) + " s");
+          continue;
+        }
         if (r.monitor_interval > 0) dt_mon = r.monitor_interval, mon.set_interval(dt_mon, t);
         if (r.extract_interval > 0) dt_ext = r.extract_interval, ext.set_interval(dt_ext, t);
         if (r.visualisation_interval > 0) dt_vis = r.visualisation_interval, vis.set_interval(dt_vis, t);
@@ -257,10 +264,10 @@ int drive(Case& c, const RunOptions& opt) {
         while (paused && !stop && !g_signal) {
           std::this_thread::sleep_for(std::chrono::milliseconds(50));
           take_requests();
-          supervision.report(*engine, paused ? "paused" : "running", wall_now());
+          if (paused) supervision.report(*engine, "paused", wall_now());
         }
       }
-      supervision.report(*engine, "running", wall_now());
+      if (!stop && !g_signal) supervision.report(*engine, "running", wall_now());
       if (stop) {
         status = "stopped";
         rd->log("stopped from the dashboard at t = " + std::to_string(engine->time()) + " s, step " + std::to_string(engine->steps()));

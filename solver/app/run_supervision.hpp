@@ -17,7 +17,7 @@ class RunSupervision {
   // `base`: what does not change (case, backend, device, sizes, end time, output kinds and intervals).
   RunSupervision(const std::string& run_dir, RunStatus base);
   const std::string& token() const { return token_; }
-  // The state now (running, paused); written at most every half second unless `force`.
+  // The state now (running, paused); written at most once a second unless `force`.
   void report(const Engine& e, const std::string& state, double wall, bool force = false);
   // The final state (completed, stopped, interrupted, unstable, failed), always written.
   void finish(const Engine& e, const std::string& state, const std::string& diagnostic, double wall);

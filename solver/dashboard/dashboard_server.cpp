@@ -3,6 +3,8 @@
 #include <httplib.h>
 
 #include <atomic>
+#include <condition_variable>
+#include <mutex>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -11,9 +13,6 @@
 #include <stdexcept>
 #include <thread>
 
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
 
 #include "dashboard/run_control.hpp"
 #include "dashboard/run_status.hpp"
@@ -78,12 +77,6 @@ std::string not_built_page() {
          "(web/, needs npm at build time). The run's state is at <a href=\"/api/state\">/api/state</a>.</p>";
 }
 
-// The server's threads yield to the solver's (Linux: niceness is per thread): once per thread.
-void lower_priority() {
-  thread_local bool done = false;
-  if (!done) done = true, ::setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 19);
-}
-
 void json_error(httplib::Response& res, int code, const std::string& msg) {
   res.status = code;
   res.set_content(nlohmann::json{{"error", msg}}.dump(), "application/json");
@@ -98,6 +91,8 @@ struct DashboardServer::Impl {
   std::thread serve_thread, poll_thread;
   std::atomic<bool> stopping{false};
   std::atomic<int> streams{0};  // open event streams: the run directory is watched only for them
+  std::mutex m;                 // with cv: the poll thread's sleep, stop() waiting for the streams
+  std::condition_variable cv;
   int port = 0;
 
   explicit Impl(const DashboardOptions& o) : opt(o), watcher(o.run_dir) {}
@@ -109,15 +104,15 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
   const int threads = opt.threads;
   d.http.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
   const std::string web = opt.web_dir.empty() ? web_directory() : opt.web_dir;
-  if (!web.empty()) d.http.set_mount_point("/", web);
-  else d.http.Get("/", [](const httplib::Request&, httplib::Response& res) { res.set_content(not_built_page(), "text/html"); });
+  if (web.empty() || !d.http.set_mount_point("/", web))
+    d.http.Get("/", [](const httplib::Request&, httplib::Response& res) { res.set_content(not_built_page(), "text/html"); });
 
   d.http.Get("/api/state", [&d](const httplib::Request&, httplib::Response& res) {
     d.watcher.poll();  // fresh, also when no stream keeps the watcher going
     nlohmann::json s = d.watcher.snapshot();
     s["control"] = !read_run_token(d.opt.run_dir).empty();
     res.set_header("Cache-Control", "no-store");
-    res.set_content(s.dump(), "application/json");
+    res.set_content(s.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace), "application/json");
   });
 
   d.http.Get("/api/events", [&d](const httplib::Request& req, httplib::Response& res) {
@@ -140,22 +135,27 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
       const auto events = d.watcher.events_after(*last, std::chrono::milliseconds(ending ? 0 : 15000));
       std::string out;
       for (const DashboardEvent& e : events) {
-        out += "id: " + std::to_string(e.id) + "\nevent: " + e.type + "\ndata: " + e.data.dump() + "\n\n";
+        out += "id: " + std::to_string(e.id) + "\nevent: " + e.type + "\ndata: " +
+               e.data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n\n";
         *last = e.id;
       }
       if (out.empty() && !ending) out = ": keep-alive\n\n";
       if (!out.empty() && !sink.write(out.data(), out.size())) return false;  // the browser left
       if (ending) sink.done();  // the run's last events are out
       return true;
-    }, [&d](bool) { --d.streams; });
+    }, [&d](bool) {
+      --d.streams;
+      d.cv.notify_all();
+    });
   });
 
   d.http.Post("/api/control", [&d](const httplib::Request& req, httplib::Response& res) {
     const std::string token = read_run_token(d.opt.run_dir);
     const std::string given = req.get_header_value("X-Poresph-Token");
     if (token.empty()) return json_error(res, 403, "this run takes no control requests (it has no token)");
-    if (given.size() != token.size() || !std::equal(given.begin(), given.end(), token.begin()))
-      return json_error(res, 403, "control needs the run's token in the X-Poresph-Token header");
+    unsigned diff = given.size() != token.size();  // compared in constant time
+    for (std::size_t k = 0; k < token.size(); ++k) diff |= static_cast<unsigned char>(token[k]) ^ static_cast<unsigned char>(k < given.size() ? given[k] : 0);
+    if (diff) return json_error(res, 403, "control needs the run's token in the X-Poresph-Token header");
     ControlRequest r;
     try {
       r = control_request_from_json(nlohmann::json::parse(req.body));
@@ -168,6 +168,11 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
     const nlohmann::json st = d.watcher.snapshot()["status"];
     if (st.is_null() || !(st["state"] == "starting" || st["state"] == "running" || st["state"] == "paused"))
       return json_error(res, 409, "the run is not running (state " + (st.is_null() ? std::string("unknown") : st["state"].get<std::string>()) + ")");
+    const double shortest = cadence_floor(st["dt"].get<double>(), st["end_time"].get<double>());
+    for (double v : {r.monitor_interval, r.extract_interval, r.visualisation_interval})
+      if (v > 0 && v < shortest)
+        return json_error(res, 400, "cadence: an interval of " + std::to_string(v) + " s is shorter than the run allows (" +
+                                        std::to_string(shortest) + " s: a time step, and a millionth of the run)");
     try {
       post_control_request(d.opt.run_dir, r);
     } catch (const std::exception& e) {
@@ -190,8 +195,17 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
   d.http.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
     json_error(res, 500, "internal error");
   });
-  d.http.set_pre_routing_handler([](const httplib::Request&, httplib::Response&) {
-    lower_priority();
+  // On a loopback address, only requests naming it (a page elsewhere that rebinds its own name to
+  // 127.0.0.1 cannot read the run or post with a token it saw).
+  const bool loopback = opt.bind == "127.0.0.1" || opt.bind == "localhost" || opt.bind == "::1";
+  d.http.set_pre_routing_handler([&d, loopback](const httplib::Request& req, httplib::Response& res) {
+    if (loopback) {
+      const std::string host = req.get_header_value("Host"), port = ":" + std::to_string(d.port);
+      if (host != "127.0.0.1" + port && host != "localhost" + port && host != "[::1]" + port) {
+        json_error(res, 403, "this dashboard answers to 127.0.0.1" + port + " and localhost" + port + " only");
+        return httplib::Server::HandlerResponse::Handled;
+      }
+    }
     return httplib::Server::HandlerResponse::Unhandled;
   });
   d.http.set_payload_max_length(64 * 1024);
@@ -210,15 +224,18 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
                                std::to_string(opt.port) + " (in use, or not an address of this machine)");
     d.port = opt.port;
   }
-  d.serve_thread = std::thread([&d] {
-    lower_priority();
-    d.http.listen_after_bind();
-  });
+  d.serve_thread = std::thread([&d] { d.http.listen_after_bind(); });
+  // stop() only stops a server that is listening: wait until it is (bounded).
+  for (int k = 0; k < 500 && !d.http.is_running(); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   d.poll_thread = std::thread([&d] {
-    lower_priority();
+    std::unique_lock<std::mutex> lock(d.m);
     while (!d.stopping) {
-      std::this_thread::sleep_for(std::chrono::duration<double>(d.opt.poll_period));
-      if (d.streams > 0) d.watcher.poll();
+      d.cv.wait_for(lock, std::chrono::duration<double>(d.opt.poll_period), [&d] { return d.stopping.load(); });
+      if (d.streams > 0 && !d.stopping) {
+        lock.unlock();
+        d.watcher.poll();
+        lock.lock();
+      }
     }
   });
 }
@@ -235,9 +252,13 @@ std::string DashboardServer::url() const {
 void DashboardServer::stop() {
   Impl& d = *impl_;
   if (d.stopping.exchange(true)) return;
+  d.cv.notify_all();
   d.watcher.poll();  // the run's last words
   d.watcher.stop();  // wakes the event streams, which send what is left and end
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  {
+    std::unique_lock<std::mutex> lock(d.m);
+    d.cv.wait_for(lock, std::chrono::seconds(2), [&d] { return d.streams.load() == 0; });
+  }
   d.http.stop();
   if (d.serve_thread.joinable()) d.serve_thread.join();
   if (d.poll_thread.joinable()) d.poll_thread.join();

@@ -10,8 +10,9 @@
 //   GET  /run/PATH         images/, extracts/ and the run's text files (not its token, control
 //                          requests or checkpoints); anything outside the run directory: 403
 // Binds to 127.0.0.1 unless told otherwise. The server's threads only read files and write
-// control requests, at the lowest priority (nice 19), and look at the run directory only while an
-// event stream is open (or a request asks): the run never waits for a client.
+// control requests, and look at the run directory only while an event stream is open (or a
+// request asks): the run never waits for a client. (At nice 19 they starved under a fully loaded
+// machine: a page took over 30 s to load; they run at the solver's priority.)
 #include <memory>
 #include <string>
 

@@ -9,6 +9,9 @@
 #include <set>
 #include <stdexcept>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 namespace psph {
 namespace fs = std::filesystem;
 
@@ -100,12 +103,12 @@ std::string create_run_token(const std::string& run_dir) {
   char hex[33];
   for (int k = 0; k < 4; ++k) std::snprintf(hex + 8 * k, 9, "%08x", static_cast<unsigned>(rd()));
   const fs::path p = fs::path(run_dir) / "token";
-  {
-    std::ofstream o(p);
-    o << hex << "\n";
-    if (!o) throw std::runtime_error(p.string() + ": cannot write the run's token");
-  }
-  fs::permissions(p, fs::perms::owner_read | fs::perms::owner_write, fs::perm_options::replace);
+  // Created readable by the owner only (never for a moment by others).
+  const int fd = ::open(p.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+  const std::string line = std::string(hex) + "\n";
+  const bool ok = fd >= 0 && ::write(fd, line.data(), line.size()) == static_cast<ssize_t>(line.size());
+  if (fd >= 0) ::close(fd);
+  if (!ok) throw std::runtime_error(p.string() + ": cannot write the run's token");
   return hex;
 }
 

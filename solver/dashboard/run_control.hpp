@@ -25,6 +25,10 @@ ControlRequest control_request_from_json(const nlohmann::json& j);
 nlohmann::json to_json(const ControlRequest& r);
 const char* action_name(ControlRequest::Action a);
 
+// The shortest output interval a run takes: its time step, and a millionth of the run (a cadence
+// request below it is refused).
+inline double cadence_floor(double dt, double end_time) { return dt > 1e-6 * end_time ? dt : 1e-6 * end_time; }
+
 // Writes one request into run_dir/control/ (temporary file, then rename; names sort by time).
 void post_control_request(const std::string& run_dir, const ControlRequest& r);
 

@@ -54,21 +54,27 @@ RunWatcher::RunWatcher(std::string run_dir) : dir_(std::move(run_dir)) {}
 
 void RunWatcher::emit(const std::string& type, nlohmann::json data) {
   DashboardEvent e;
-  e.id = static_cast<long>(events_.size()) + 1;
+  e.id = ++seq_;
   e.type = type;
   e.data = std::move(data);
-  events_.push_back(std::move(e));
+  if (type == "status") status_event_ = std::move(e);  // only the latest is kept: the log stays
+  else events_.push_back(std::move(e));                // as long as the run's own records
 }
 
 void RunWatcher::poll() {
   {
     std::lock_guard<std::mutex> lock(m_);
-    const std::size_t before = events_.size();
-    poll_monitors();
-    poll_frames();
-    poll_extracts();
-    poll_status();  // last: a finished state comes after the rows and frames it ends
-    if (events_.size() == before) return;
+    const long before = seq_;
+    // Each source on its own: a file that cannot be read now (permissions, a bad link, a half
+    // write) is tried again at the next poll and never takes the server down.
+    for (void (RunWatcher::*source)() : {&RunWatcher::poll_monitors, &RunWatcher::poll_frames, &RunWatcher::poll_extracts,
+                                         &RunWatcher::poll_status}) {  // status last: a final state after what it ends
+      try {
+        (this->*source)();
+      } catch (const std::exception&) {
+      }
+    }
+    if (seq_ == before) return;
   }
   cv_.notify_all();
 }
@@ -166,7 +172,7 @@ void RunWatcher::poll_frames() {
       const std::string name = p.filename().string();
       list.push_back({{"pipeline", p.parent_path().filename().string()},
                       {"view", name.substr(0, name.size() - std::strlen(suffix))},
-                      {"url", "/run/images/" + p.parent_path().filename().string() + "/" + name}});
+                      {"url", "run/images/" + p.parent_path().filename().string() + "/" + name}});
     }
     frame["images"] = list;
     frames_.push_back(frame);
@@ -184,7 +190,7 @@ void RunWatcher::poll_extracts() {
     if (index < extracts_.size()) continue;
     nlohmann::json e;
     try {
-      e = {{"index", index}, {"time", std::stod((*it)[1].str())}, {"url", "/run/extracts/" + (*it)[2].str()}};
+      e = {{"index", index}, {"time", std::stod((*it)[1].str())}, {"url", "run/extracts/" + (*it)[2].str()}};
     } catch (const std::exception&) {
       break;
     }
@@ -196,15 +202,21 @@ void RunWatcher::poll_extracts() {
 nlohmann::json RunWatcher::snapshot() const {
   std::lock_guard<std::mutex> lock(m_);
   return {{"status", status_}, {"columns", columns_}, {"rows", rows_}, {"frames", frames_},
-          {"extracts", extracts_}, {"last_event", static_cast<long>(events_.size())}};
+          {"extracts", extracts_}, {"last_event", seq_}};
 }
 
 std::vector<DashboardEvent> RunWatcher::events_after(long since, std::chrono::milliseconds wait) const {
   std::unique_lock<std::mutex> lock(m_);
   if (since < 0) since = 0;
-  cv_.wait_for(lock, wait, [&] { return stopped_ || static_cast<long>(events_.size()) > since; });
+  cv_.wait_for(lock, wait, [&] { return stopped_ || seq_ > since; });
   std::vector<DashboardEvent> out;
-  for (long k = since; k < static_cast<long>(events_.size()); ++k) out.push_back(events_[k]);
+  auto first = std::lower_bound(events_.begin(), events_.end(), since + 1,
+                                [](const DashboardEvent& e, long id) { return e.id < id; });
+  out.assign(first, events_.end());
+  if (status_event_.id > since)  // in its place among the others
+    out.insert(std::lower_bound(out.begin(), out.end(), status_event_.id,
+                                [](const DashboardEvent& e, long id) { return e.id < id; }),
+               status_event_);
   return out;
 }
 

@@ -4,7 +4,8 @@
 // (or, for a run directory older than it, summary.json),
 // monitors.csv (complete lines only), images/frames.csv (a row once a frame's images are written)
 // with the images/<pipeline>/<view>_<frame>.png files, and extracts/particles.pvd. Each poll turns
-// what is new into numbered events; a client gets the whole state once, then the events after it.
+// what is new into numbered events; a client gets the whole state once, then the events after it
+// (of the status, only the latest).
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
@@ -48,7 +49,9 @@ class RunWatcher {
   mutable std::mutex m_;
   mutable std::condition_variable cv_;
   bool stopped_ = false;
-  std::vector<DashboardEvent> events_;
+  long seq_ = 0;                       // the last event's number
+  std::vector<DashboardEvent> events_;  // all but status, by number
+  DashboardEvent status_event_;         // the latest status (id 0: none yet)
   nlohmann::json status_ = nullptr, columns_ = nlohmann::json::array(), rows_ = nlohmann::json::array();
   nlohmann::json frames_ = nlohmann::json::array(), extracts_ = nlohmann::json::array();
   std::string status_text_, monitor_partial_;

@@ -9,10 +9,13 @@ std::vector<LayoutPoint> concentric_points(const std::array<double, 3>& centre, 
                                            int D) {
   std::vector<LayoutPoint> out;
   const double golden = M_PI * (3 - std::sqrt(5.0));  // the Fibonacci spiral's turn per point
-  for (int k = 0; (k + 0.5) * dx <= radius * (1 + 1e-12); ++k) {
-    const double r = (k + 0.5) * dx, lo = k * dx, hi = (k + 1) * dx;
+  // Shells of thickness dr = radius / round(radius / dx): the last one ends on the surface.
+  const int shells = std::max(1, static_cast<int>(std::lround(radius / dx)));
+  const double dr = radius / shells;
+  for (int k = 0; k < shells; ++k) {
+    const double r = (k + 0.5) * dr, lo = k * dr, hi = (k + 1) * dr;
     // Shell measure: 2 points (1D), the annulus pi (hi^2 - lo^2) (2D), the shell 4/3 pi (hi^3 - lo^3) (3D).
-    const double shell = D == 1 ? 2 * dx : D == 2 ? M_PI * (hi * hi - lo * lo) : 4.0 / 3.0 * M_PI * (hi * hi * hi - lo * lo * lo);
+    const double shell = D == 1 ? 2 * dr : D == 2 ? M_PI * (hi * hi - lo * lo) : 4.0 / 3.0 * M_PI * (hi * hi * hi - lo * lo * lo);
     const int n = D == 1 ? 2 : std::max(1, static_cast<int>(std::lround(shell / std::pow(dx, D))));
     for (int q = 0; q < n; ++q) {
       LayoutPoint p;

@@ -141,14 +141,20 @@ void build_particles(Case& c) {
     int d = 0;
     while (d < D && ++idx[d] >= n[d]) idx[d++] = 0;
   }
-  // Concentric spheres place their own points, kept where no later geometry (and the domain's
-  // edge, unless periodic) takes them.
+  // Concentric spheres place their own points, kept where no later geometry (nor the domain's
+  // edge) takes them.
   for (std::size_t g = 0; g < c.geometry.size(); ++g) {
     const GeometryShape& gs = c.geometry[g];
     if (!gs.concentric || gs.material < 0) continue;
     for (const LayoutPoint& p : concentric_points(gs.center, gs.radius, dx, D)) {
       bool inside = true;
-      for (int k = 0; k < D; ++k) inside = inside && (sc.periodic[k] || (p.x[k] >= sc.lower[k] && p.x[k] < sc.upper[k]));
+      for (int k = 0; k < D; ++k) {
+        inside = inside && p.x[k] >= sc.lower[k] && p.x[k] < sc.upper[k];
+        // Across a periodic seam its shells would land on lattice sites the other side owns.
+        if (sc.periodic[k] && !inside)
+          throw CaseError(c.file + ": geometry[" + std::to_string(g) + "]: a concentric sphere must lie inside the "
+                          "domain along its periodic axes; expected a centre and radius that keep it off the seam");
+      }
       if (inside && owner_of(p.x.data()) == static_cast<int>(g)) add(p.x.data(), static_cast<int>(g), p.volume);
     }
   }

@@ -54,7 +54,7 @@ export class Charts {
   }
 
   addRows(rows) {
-    this.rows.push(...rows);
+    for (const r of rows) this.rows.push(r);
     for (const ch of this.charts) ch.plot.setData(this.data(ch.columns));
   }
 }

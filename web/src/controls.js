@@ -6,7 +6,11 @@ const $ = (id) => document.getElementById(id);
 export function setupControls() {
   const url = new URL(window.location.href);
   const fromUrl = url.searchParams.get('token');
-  if (fromUrl) sessionStorage.setItem('poresph-token', fromUrl);
+  if (fromUrl) {
+    sessionStorage.setItem('poresph-token', fromUrl);
+    url.searchParams.delete('token');  // out of the address bar and the history
+    window.history.replaceState(null, '', url.toString());
+  }
   $('token').value = sessionStorage.getItem('poresph-token') || '';
   $('token').addEventListener('change', () => sessionStorage.setItem('poresph-token', $('token').value.trim()));
 

@@ -29,9 +29,10 @@ export class Frames {
     const f = this.frames[index];
     this.label.textContent = `frame ${f.frame} · step ${f.step} · t = ${number(f.time)} s`;
     const figures = [];
+    const existing = new Map([...this.container.querySelectorAll('figure')].map((el) => [el.dataset.key, el]));
     for (const img of f.images) {
       const key = `${img.pipeline}/${img.view}`;
-      let fig = this.container.querySelector(`figure[data-key="${key}"]`);
+      let fig = existing.get(key);
       if (!fig) {
         fig = document.createElement('figure');
         fig.dataset.key = key;

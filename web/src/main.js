@@ -46,8 +46,11 @@ async function main() {
       while (wanted >= 0) {
         const e = app.extracts[wanted];
         wanted = -1;
-        const fields = await view.load(e.url);
-        showViewControls(fields);
+        try {
+          showViewControls(await view.load(e.url));
+        } catch (err) {
+          $('legend').textContent = `extract ${e.index}: ${err.message}`;
+        }
       }
     } finally {
       loading = false;

@@ -35,8 +35,11 @@ try {
   // A frame pushed after the page loaded, shown at once (the timeline follows the run).
   const framesAtLoad = await page.evaluate(() => window.dashboard.frames.frames.length);
   await until('a new frame', async () => (await page.evaluate(() => window.dashboard.frames.frames.length)) > framesAtLoad + 1);
+  await until('the newest frame on show', async () => {
+    const latest = await page.evaluate(() => window.dashboard.frames.frames.length - 1);
+    return (await text('#frame-label')).startsWith(`frame ${latest} `);
+  });
   const latest = await page.evaluate(() => window.dashboard.frames.frames.length - 1);
-  await until('the newest frame on show', async () => (await text('#frame-label')).startsWith(`frame ${latest} `));
   await until('its image loaded', () => page.evaluate(() => [...document.querySelectorAll('#images img')].every((i) => i.complete && i.naturalWidth > 0)));
   console.log(`frames: ${framesAtLoad} at load, ${latest + 1} later`);
 
@@ -59,6 +62,10 @@ try {
 
   // The 3D view: colour by another field; the legend and the picture change.
   await until('an extract in the 3D view', async () => (await text('#legend')).includes('particles'));
+  // Pinned to the first extract, so that a new one arriving does not change the picture.
+  await page.locator('#extract-select').selectOption('0');
+  await until('the first extract on show', () => page.evaluate(() => window.dashboard.view.url.endsWith('particles_000000.vtp')));
+  await sleep(300);
   const before = await page.locator('#view3d').screenshot();
   const fields = await page.locator('#field-select option').allTextContents();
   assert.ok(fields.includes('velocity') && fields.includes('pressure'), fields.join());
@@ -87,6 +94,11 @@ try {
     const base = attached.url.replace(/\?token=.*/, '');
     const token = attached.url.replace(/.*token=/, '');
     const st = await (await fetch(`${base}api/state`)).json();
+    // The token is in no file the dashboard serves.
+    for (const f of ['log.txt', 'status.json', 'summary.json', 'case.resolved.toml', 'monitors.csv']) {
+      const r = await fetch(`${base}run/${f}`);
+      if (r.ok) assert.ok(!(await r.text()).includes(token), `${f} holds the token`);
+    }
     assert.equal(st.status.state, 'running');
     assert.equal(st.status.case, 'dashboard_live');
     const post = (action, t) => fetch(`${base}api/control`, {
