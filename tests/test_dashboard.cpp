@@ -15,6 +15,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "app/output_clock.hpp"
 #include "dashboard/dashboard_server.hpp"
 #include "dashboard/run_control.hpp"
 #include "dashboard/run_status.hpp"
@@ -304,4 +305,17 @@ TEST(RunControl, RequestsParseOrRefuseWithTheReason) {
   EXPECT_TRUE(fs::is_empty(run.dir / "control"));
   // The token is the owner's alone.
   EXPECT_EQ(fs::status(run.dir / "token").permissions() & (fs::perms::group_all | fs::perms::others_all), fs::perms::none);
+}
+
+TEST(OutputClock, MultiplesOfTheIntervalAfterTheStartAndAfterAChange) {
+  OutputClock c(0.01, 0.0);
+  EXPECT_DOUBLE_EQ(c.next(), 0.01);
+  EXPECT_FALSE(c.due(0.0099));
+  EXPECT_TRUE(c.due(0.01 * (1 - 1e-13)));  // a step that lands a rounding short of it
+  c.pass(0.0305);                          // a long step past two of them: the next one after it
+  EXPECT_DOUBLE_EQ(c.next(), 0.04);
+  OutputClock restart(0.01, 0.025);  // a restart part-way
+  EXPECT_DOUBLE_EQ(restart.next(), 0.03);
+  c.set_interval(0.004, 0.0305);  // the dashboard's cadence: the next multiple of the new interval
+  EXPECT_DOUBLE_EQ(c.next(), 0.032);
 }
