@@ -117,6 +117,15 @@ TEST(Dashboard, ServesOnlyTheRunsImagesExtractsAndRecords) {
   EXPECT_EQ(status_of(s, "/run/monitors.csv"), 200);
   EXPECT_EQ(status_of(s, "/run/case.resolved.toml"), 200);
   EXPECT_EQ(status_of(s, "/run/images/phases/none.png"), 404);
+  {  // a file larger than one streamed piece arrives whole
+    std::string big(300 * 1024 + 7, '\0');
+    for (std::size_t k = 0; k < big.size(); ++k) big[k] = static_cast<char>(k * 31 % 251);
+    std::ofstream(s.run.dir / "extracts" / "big.vtp", std::ios::binary) << big;
+    auto r = s.client().Get("/run/extracts/big.vtp");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 200);
+    EXPECT_TRUE(r->body == big);
+  }
   // The token, control requests, checkpoints, and anything outside: refused.
   for (const char* p : {"/run/token", "/run/control/x.json", "/run/checkpoints/step_0000000010.ckpt", "/run/images/../token",
                         "/run/images/%2e%2e/token", "/run/images/..%2ftoken", "/run/../../../etc/passwd",

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 
 #include "dashboard/run_control.hpp"
@@ -185,11 +186,19 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
   d.http.Get(R"(/run/(.+))", [&d](const httplib::Request& req, httplib::Response& res) {
     const fs::path p = servable(d.opt.run_dir, req.matches[1].str());
     if (p.empty()) return json_error(res, 403, "not a file of the run's images, extracts or records");
-    std::ifstream in(p, std::ios::binary);
-    if (!in || fs::is_directory(p)) return json_error(res, 404, "no such file in the run directory");
-    std::ostringstream s;
-    s << in.rdbuf();
-    res.set_content(s.str(), content_type(p));
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(p, ec);
+    auto in = std::make_shared<std::ifstream>(p, std::ios::binary);
+    if (ec || !*in || fs::is_directory(p)) return json_error(res, 404, "no such file in the run directory");
+    // Streamed in 64 KiB pieces: a large extract never sits whole in the solver's memory.
+    res.set_content_provider(static_cast<size_t>(size), content_type(p),
+                             [in](size_t offset, size_t length, httplib::DataSink& sink) {
+                               std::vector<char> buf(std::min<size_t>(length, 64 * 1024));
+                               in->seekg(static_cast<std::streamoff>(offset));
+                               in->read(buf.data(), static_cast<std::streamsize>(buf.size()));
+                               const auto got = static_cast<size_t>(in->gcount());
+                               return got > 0 && sink.write(buf.data(), got);
+                             });
   });
 
   d.http.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
