@@ -50,7 +50,7 @@ struct FakeRun {
     RunStatus s;
     s.case_name = "fake", s.backend = "cpu", s.device = "test", s.precision = "double";
     s.state = state, s.step = 10, s.time = 0.001, s.end_time = 1;
-    StatusFile(dir.string()).update(s, true);
+    StatusFile(dir.string()).write(s);
   }
   void append_row(const std::string& row) { std::ofstream(dir / "monitors.csv", std::ios::app) << row << std::flush; }
 };
@@ -259,7 +259,7 @@ TEST(RunWatcher, ARunWhoseProcessIsGoneIsLost) {
   FakeRun run("lost");
   RunStatus s;
   s.case_name = "fake", s.state = "running";
-  StatusFile(run.dir.string()).update(s, true);
+  StatusFile(run.dir.string()).write(s);
   auto j = nlohmann::json::parse(std::ifstream(run.dir / "status.json"));
   const pid_t child = ::fork();
   if (child == 0) ::_exit(0);

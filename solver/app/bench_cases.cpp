@@ -25,19 +25,18 @@ std::vector<BenchSpec> bench_specs(const std::string& backend, bool quick) {
       b.steps = backend == "cuda" ? 50 : std::max(3, static_cast<int>(2e6 / n));
       s.push_back(b);
     }
+  // An embedded case file, timed over `steps` (`quick`: `quick_steps`).
+  auto embedded = [&](const char* name, int quick_steps, int steps) {
+    BenchSpec b;
+    b.name = b.embedded_case = name;
+    b.steps = quick ? quick_steps : steps;
+    s.push_back(b);
+  };
   // SPHinXsys' test_3d_dambreak set-up (peer-codes digest §7.1b): fluid particle-steps per second
   // compare directly with its 0.40-0.48 M on 2 cores.
-  BenchSpec db;
-  db.name = "dam_break_3d";
-  db.embedded_case = "dam_break_3d";
-  db.steps = quick ? 50 : 400;
-  s.push_back(db);
+  embedded("dam_break_3d", 50, 400);
   // Two fluids with surface tension and walls: the colour, normal and curvature passes on top.
-  BenchSpec dr;
-  dr.name = "drainage_2d";
-  dr.embedded_case = "drainage_2d";
-  dr.steps = quick ? 50 : 1000;
-  s.push_back(dr);
+  embedded("drainage_2d", 50, 1000);
   // Elastic solids: the cantilever plate vibrating in each formulation (the displacement form at
   // nu = 0.2, below its bound), and the cube coupled with water.
   for (SolidFormulation form : {SolidFormulation::Stress, SolidFormulation::Displacement}) {
@@ -57,16 +56,8 @@ std::vector<BenchSpec> bench_specs(const std::string& backend, bool quick) {
   svk.steps = quick ? 100 : 2000;
   s.push_back(svk);
   // A rigid disc settling through a viscous fluid: the bodies' sums and placement on top of the fluid.
-  BenchSpec settle;
-  settle.name = "settling_cylinder_2d";
-  settle.embedded_case = "settling_cylinder_2d";
-  settle.steps = quick ? 100 : 2000;
-  s.push_back(settle);
-  BenchSpec cube;
-  cube.name = "elastic_cube_3d";
-  cube.embedded_case = "elastic_cube_3d";
-  cube.steps = quick ? 20 : 200;
-  s.push_back(cube);
+  embedded("settling_cylinder_2d", 100, 2000);
+  embedded("elastic_cube_3d", 20, 200);
   return s;
 }
 

@@ -1,9 +1,7 @@
 // poresph run / check / demo: load and check a case, then drive the run and its run directory.
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <filesystem>
 #include <cstdio>
 #include <iostream>
@@ -11,6 +9,7 @@
 #include <thread>
 
 #include "app/commands.hpp"
+#include "app/interrupts.hpp"
 #include "app/output_clock.hpp"
 #include "app/run_supervision.hpp"
 #include "dashboard/dashboard_server.hpp"
@@ -29,8 +28,6 @@
 namespace psph {
 namespace {
 
-std::atomic<int> g_signal{0};
-extern "C" void on_signal(int sig) { g_signal = sig; }
 
 std::string seconds_text(double s) {
   char b[32];
@@ -229,9 +226,7 @@ int drive(Case& c, const RunOptions& opt) {
     }
   };
 
-  g_signal = 0;
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  catch_interrupts();
   auto last_print = t0;
   std::string status = "completed", diagnostic;
   int code = 0;
@@ -261,22 +256,22 @@ int drive(Case& c, const RunOptions& opt) {
       take_requests();
       if (paused && !stop) {
         supervision.report(*engine, "paused", wall_now(), true);
-        while (paused && !stop && !g_signal) {
+        while (paused && !stop && !caught_interrupt()) {
           std::this_thread::sleep_for(std::chrono::milliseconds(50));
           take_requests();
           if (paused) supervision.report(*engine, "paused", wall_now());
         }
       }
-      if (!stop && !g_signal) supervision.report(*engine, "running", wall_now());
+      if (!stop && !caught_interrupt()) supervision.report(*engine, "running", wall_now());
       if (stop) {
         status = "stopped";
         rd->log("stopped from the dashboard at t = " + std::to_string(engine->time()) + " s, step " + std::to_string(engine->steps()));
         break;
       }
-      if (g_signal) {
+      if (caught_interrupt()) {
         status = "interrupted";
         code = 130;
-        rd->log("interrupted by signal " + std::to_string(g_signal.load()) + " at t = " + std::to_string(t) + " s");
+        rd->log("interrupted by signal " + std::to_string(caught_interrupt()) + " at t = " + std::to_string(t) + " s");
         break;
       }
     }
@@ -291,8 +286,7 @@ int drive(Case& c, const RunOptions& opt) {
     diagnostic = e.what();
     rd->log(std::string("failed: ") + e.what());
   }
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
+  release_interrupts();
   // An unstable or failed state is not saved: the last good checkpoint stays.
   if (status != "unstable" && status != "failed") {
     monitor();

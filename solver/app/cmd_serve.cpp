@@ -1,22 +1,16 @@
 // poresph serve RUNDIR: the dashboard of a finished run, or of one still running in another
 // process (it reads the run directory, and posts control requests there with the run's token).
-#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <thread>
 
 #include "app/commands.hpp"
+#include "app/interrupts.hpp"
 #include "dashboard/dashboard_server.hpp"
 #include "dashboard/run_control.hpp"
 
 namespace psph {
-namespace {
-std::atomic<int> g_serve_signal{0};
-extern "C" void on_serve_signal(int sig) { g_serve_signal = sig; }
-}  // namespace
-
 int cmd_serve(const std::string& run_dir, int port, const std::string& bind) {
   namespace fs = std::filesystem;
   if (!fs::is_directory(run_dir) || !fs::exists(fs::path(run_dir) / "case.resolved.toml")) {
@@ -33,13 +27,10 @@ int cmd_serve(const std::string& run_dir, int port, const std::string& bind) {
   const std::string token = read_run_token(run_dir);
   std::cout << "poresph serve " << run_dir << ": dashboard at " << server->url()
             << (token.empty() ? "" : "?token=" + token) << " (Ctrl-C to stop)" << std::endl;
-  g_serve_signal = 0;
-  std::signal(SIGINT, on_serve_signal);
-  std::signal(SIGTERM, on_serve_signal);
-  while (!g_serve_signal) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  catch_interrupts();
+  while (!caught_interrupt()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   server->stop();
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
+  release_interrupts();
   return 0;
 }
 

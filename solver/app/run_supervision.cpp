@@ -22,14 +22,14 @@ RunStatus RunSupervision::status(const Engine& e, const std::string& state, doub
 
 void RunSupervision::report(const Engine& e, const std::string& state, double wall, bool force) {
   if (!force && state == file_.last().state && !file_.due()) return;
-  file_.update(status(e, state, wall), force);
+  file_.write(status(e, state, wall));
 }
 
 void RunSupervision::finish(const Engine& e, const std::string& state, const std::string& diagnostic, double wall) {
   RunStatus s = status(e, state, wall);
   s.diagnostic = diagnostic;
   s.time_left = 0;
-  file_.update(s, true);
+  file_.write(s);
 }
 
 void RunSupervision::set_intervals(double monitor, double extract, double visualisation) {

@@ -167,7 +167,7 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
     }
     d.watcher.poll();
     const nlohmann::json st = d.watcher.snapshot()["status"];
-    if (st.is_null() || !(st["state"] == "starting" || st["state"] == "running" || st["state"] == "paused"))
+    if (st.is_null() || !status_from_json(st).live())
       return json_error(res, 409, "the run is not running (state " + (st.is_null() ? std::string("unknown") : st["state"].get<std::string>()) + ")");
     const double shortest = cadence_floor(st["dt"].get<double>(), st["end_time"].get<double>());
     for (double v : {r.monitor_interval, r.extract_interval, r.visualisation_interval})

@@ -59,11 +59,8 @@ bool StatusFile::due() const {
   return !written_ || std::chrono::duration<double>(std::chrono::steady_clock::now() - last_write_).count() >= period_;
 }
 
-void StatusFile::update(RunStatus s, bool force) {
+void StatusFile::write(RunStatus s) {
   const auto now = std::chrono::steady_clock::now();
-  const bool due = !written_ || force || s.state != last_.state ||
-                   std::chrono::duration<double>(now - last_write_).count() >= period_;
-  if (!due) return;
   s.pid = static_cast<long>(::getpid());
   s.updated = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
   {

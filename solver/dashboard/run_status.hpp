@@ -1,7 +1,8 @@
 #pragma once
 // A run's state for its observers (the dashboard, `poresph serve`): status.json in the run
-// directory, rewritten atomically (temporary file, then rename) on every change of state and at
-// most every `period` seconds while it runs, so a server in another process can attach.
+// directory, rewritten atomically (temporary file, then rename), so a server in another process
+// can attach. The run writes it on every change of state and otherwise when due(), at most every
+// `period` seconds (app/run_supervision.hpp).
 #include <chrono>
 #include <string>
 
@@ -36,10 +37,10 @@ RunStatus status_from_json(const nlohmann::json& j);
 class StatusFile {
  public:
   StatusFile(std::string run_dir, double period = 1.0);
-  // True when `period` has passed since the last write (the caller then builds and passes a status).
+  // True when nothing was written yet or `period` has passed since the last write.
   bool due() const;
-  // Writes when the state changed or `period` has passed since the last write (or `force`).
-  void update(RunStatus s, bool force = false);
+  // Writes `s` (stamped with this process's id and the time).
+  void write(RunStatus s);
   const RunStatus& last() const { return last_; }
 
  private:

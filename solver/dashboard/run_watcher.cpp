@@ -93,15 +93,15 @@ nlohmann::json RunWatcher::status_of_summary() const {
 void RunWatcher::poll_status() {
   const std::string text = read_file(fs::path(dir_) / "status.json");
   nlohmann::json j;
+  RunStatus s;
   try {
     j = text.empty() ? status_of_summary() : nlohmann::json::parse(text);
-    status_from_json(j);  // complete and well-typed
+    s = status_from_json(j);  // complete and well-typed
   } catch (const std::exception&) {
     return;  // none yet
   }
   // A live state whose process has gone (killed before it could say so).
-  if ((j["state"] == "running" || j["state"] == "paused" || j["state"] == "starting") && j["pid"].get<long>() > 0 &&
-      ::kill(static_cast<pid_t>(j["pid"].get<long>()), 0) != 0 && errno == ESRCH) {
+  if (s.live() && s.pid > 0 && ::kill(static_cast<pid_t>(s.pid), 0) != 0 && errno == ESRCH) {
     j["state"] = "lost";
     j["diagnostic"] = "the run's process (pid " + std::to_string(j["pid"].get<long>()) + ") ended without a final status";
   }
