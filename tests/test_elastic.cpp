@@ -23,8 +23,9 @@ namespace {
 
 // rho a at the centre of a lattice (support 4 spacings) for the displacement field u(x), from the
 // pair terms the elastic pass sums. Each Hessian component of eq. 61 carries a lattice anisotropy
-// error (digest §2.6: ~30 % at support 2 spacings, ~1 % at 4 in 3D); in 2D at 4 spacings the
-// d2u_y/dx2 term reads 3.6 % low while their sum, the Laplacian, is within 0.1 %.
+// error (our computation, not in the paper: ~30 % at support 2 spacings, ~1 % at 4 in 3D); in
+// 2D at 4 spacings the d2u_y/dx2 term reads 3.6 % low while their sum, the Laplacian, is within
+// 0.1 %.
 template <int D, class U>
 Vec<D> navier_at_centre(const U& u, Real k, Real mu) {
   const int n = 13;
@@ -114,6 +115,12 @@ TEST(Elastic, CaseKeys) {
   expect_refused(cube, "[solid]", "[solid]\nformulation = \"displacement\"\ncoupling = \"traction\"",
                  "solid.coupling: expected \"pair\" or \"pair_eos\" with formulation = \"displacement\"");
   EXPECT_EQ(error_of(replaced(cube, "[solid]", "[solid]\nformulation = \"displacement\"")), "");
+  // Saint Venant-Kirchhoff with eq. 74's small-strain pressure: refused whichever key comes first.
+  for (const char* keys : {"model = \"saint_venant_kirchhoff\"\ncoupling = \"pair_eos\"",
+                           "coupling = \"pair_eos\"\nmodel = \"saint_venant_kirchhoff\""})
+    expect_refused(cube, "[solid]", std::string("[solid]\n") + keys,
+                   "solid.coupling: expected \"traction\" or \"pair\" with model = \"saint_venant_kirchhoff\"");
+  EXPECT_EQ(error_of(replaced(cube, "[solid]", "[solid]\nmodel = \"saint_venant_kirchhoff\"\ncoupling = \"pair\"")), "");
   expect_refused(cube, "[solver]", "[solver]\nimplicit_viscosity = true", "solver.implicit_viscosity: expected false");
   expect_refused(cube, "[solver]", "[solver]\nlaplacian_correction = \"tensor\"", "solver.laplacian_correction");
   const std::string water = embedded_case_text("poiseuille_2d");

@@ -80,7 +80,7 @@ TEST(Corrections, DeptulskiTable21PairValues) {
   EXPECT_NEAR(p[0] + p[1] + p[2] + p[3], 20.0, 1e-9);  // divergence of 20 x, exactly
 }
 
-// Deptulski §2.5 (digest §4.2-4.5): the corrected divergence of a quartic field is within about
+// Deptulski §2.5 (Table 2.2, §2.5.2-2.5.4): the corrected divergence of a quartic field is within about
 // 1 % everywhere, at any particle density, with disorder, in 1D to 3D; at point 4 of the 5-point
 // bar the thesis prints 0.202 %.
 TEST(Corrections, QuarticDivergenceAsInDeptulski) {
@@ -161,7 +161,8 @@ TEST(Corrections, ShepardKernelIsAPartitionOfUnity) {
 }
 
 TEST(Lattice, NeighbourCountsOfPazdniakouResolutions) {
-  // support = 2, 3, 4 spacings on a cubic lattice: 26, 92, 250 neighbours (digest §2.2).
+  // support = 2, 3, 4 spacings on a cubic lattice: 26, 92, 250 neighbours (our count for the
+  // spacings h/2, h/3, h/4 of Pazdniakou 2018 §4.2; the paper gives no counts).
   for (auto [ratio, expected] : {std::pair{2, 26}, std::pair{3, 92}, std::pair{4, 250}}) {
     int count = 0;
     for (int i = -ratio; i <= ratio; ++i)
@@ -170,7 +171,8 @@ TEST(Lattice, NeighbourCountsOfPazdniakouResolutions) {
           if (i * i + j * j + k * k < ratio * ratio && (i || j || k)) ++count;
     EXPECT_EQ(count, expected);
   }
-  // And the lattice sum the masses are built from: sum_j W_ij V_j = 0.99997 at h/2 (digest §2.2).
+  // And the lattice sum the masses are built from: sum_j W_ij V_j = 0.99997 at h/2 (our
+  // computation, not in the paper).
   EXPECT_NEAR(lattice_kernel_sum(3, KernelType::CubicSpline, 2.0, 1.0), 0.99997, 2e-5);
 }
 

@@ -19,7 +19,6 @@
 #include "io/checkpoint_file.hpp"
 #include "io/particle_output.hpp"
 #include "io/run_directory.hpp"
-#include "monitors/rigid_body_monitor.hpp"
 #include "monitors/two_phase.hpp"
 #include "scene/case_file.hpp"
 #include "scene/embedded_cases.hpp"
@@ -130,34 +129,17 @@ int drive(Case& c, const RunOptions& opt) {
       rd->log(std::string("warning: no checkpoint: ") + e.what());
     }
   };
-  const bool elastic = std::any_of(c.scene.materials.begin(), c.scene.materials.end(),
-                                   [](const SceneMaterial& m) { return m.props.kind == MaterialKind::Elastic; });
-  const bool damped = elastic && c.scene.options.solid_damping_rate > 0;
-  if (elastic) rd->add_monitor_columns({"elastic_energy"});
-  if (damped) rd->add_monitor_columns({"dissipated_energy"});
-  const int bodies = static_cast<int>(engine->rigid_bodies().size());
-  if (bodies > 0) rd->add_monitor_columns(rigid_body_columns(engine->dimension(), bodies));
+  // The stages' monitors as the engine names them, then the two-phase monitors of the run.
   std::unique_ptr<TwoPhaseMonitor> two_phase;
-  if (c.two_phase) {
-    two_phase = std::make_unique<TwoPhaseMonitor>(c.scene, c.monitor_region);
-    rd->add_monitor_columns(two_phase->columns());
-  }
+  if (c.two_phase) two_phase = std::make_unique<TwoPhaseMonitor>(c.scene, c.monitor_region);
   auto monitor = [&] {
-    std::vector<double> extra;
-    if (elastic || damped) {
-      const StepStats st = engine->stats();
-      if (elastic) extra.push_back(st.elastic_energy);
-      if (damped) extra.push_back(st.dissipated_energy);
-    }
-    if (bodies > 0) {
-      const std::vector<double> row = rigid_body_row(*engine);
-      extra.insert(extra.end(), row.begin(), row.end());
-    }
-    if (!two_phase) return rd->monitor(*engine, extra);
+    std::vector<MonitorValue> row = engine->monitors();
+    if (!two_phase) return rd->monitor(*engine, row);
     const bool before = two_phase->percolation_time() >= 0;
-    const std::vector<double> row = two_phase->sample(*engine);
-    extra.insert(extra.end(), row.begin(), row.end());
-    rd->monitor(*engine, extra);
+    const std::vector<std::string> names = two_phase->columns();
+    const std::vector<double> values = two_phase->sample(*engine);
+    for (std::size_t k = 0; k < names.size(); ++k) row.push_back({names[k], values[k]});
+    rd->monitor(*engine, row);
     if (!before && two_phase->percolation_time() >= 0)
       rd->log("gas percolates (joins the inlet and outlet of the monitor region) at t = " +
               std::to_string(two_phase->percolation_time()) + " s, gas saturation " +

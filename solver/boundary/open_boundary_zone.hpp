@@ -5,6 +5,16 @@
 
 namespace psph {
 
+// As read from the case.
+struct SceneOpenBoundary {
+  int axis = -1;  // -1: none
+  double lower = 0, upper = 0;  // the domain along the axis (m)
+  double thickness = 0;         // of each buffer (m)
+  bool inlet_at_lower = true;
+  double inlet_pressure = 0, outlet_pressure = 0;  // Pa
+  int inlet_material = 0;
+};
+
 enum class BufferZone : int { None = 0, Inlet = 1, Outlet = 2 };
 
 template <int D>

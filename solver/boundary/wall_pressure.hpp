@@ -1,7 +1,8 @@
 #pragma once
 // Pressure that wall particles present to the fluid.
 //   summation:    the wall's own density by summation (or continuity) through the EOS, with the
-//                 initial summed density as reference (Pazdniakou §3.3, digest §7 item 17). Soft:
+//                 initial summed density as reference (Pazdniakou §3.3, eq. 74; the summed value is
+//                 our choice, so that walls start at zero pressure). Soft:
 //                 under a sustained body force the fluid creeps into the wall (measured: in the
 //                 sphere array the first fluid layer compresses against the sphere and the
 //                 permeability drifts from -1 % at 0.3 s to -35 % at 2.3 s).

@@ -5,8 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "core/instability.hpp"
 #include "rigid/rigid_bodies.hpp"
 #include "scene/scene.hpp"
+#include "stage/monitor_value.hpp"
 #include "state/checkpoint.hpp"
 
 namespace psph {
@@ -17,11 +19,6 @@ struct StepStats {
   double dissipated_energy = 0;  // by the solids' damping since the start (solid/damping.hpp)
   std::string dt_limit;  // which limit set the last step
   int linear_iterations = 0;  // BiCGSTAB iterations of the last implicit viscous step (0 if explicit)
-};
-
-// Raised when a run goes unstable (NaN, a particle leaving the domain, a collapsing time step).
-struct InstabilityError : std::runtime_error {
-  using std::runtime_error::runtime_error;
 };
 
 class Engine {
@@ -46,6 +43,9 @@ class Engine {
   virtual Checkpoint checkpoint() = 0;
   // Continues from a checkpoint of the same scene; throws std::invalid_argument naming what differs.
   virtual void restore(const Checkpoint& c) = 0;
+  // The stages' monitors at the current state (elastic energy, rigid bodies' motion...), named:
+  // the same names, in the same order, at every call of a run.
+  virtual std::vector<MonitorValue> monitors() = 0;
   // The rigid bodies' motion (rigid/rigid_bodies.hpp), in the case's order of their geometries.
   virtual std::vector<RigidBodyState> rigid_bodies() const { return {}; }
   // Runs to t_end (exactly).

@@ -27,7 +27,8 @@ struct NumberDensityPass {
 
 // rho_i = sum_j m_j W_ij (eq. 39), the number-density form rho_i = m_i sum_j W_ij (eq. 40: a
 // particle's density does not take its neighbours' masses, so an interface between fluids of
-// density ratio 1000 stays sharp, digest §7 item 18), or the normalised form
+// density ratio 1000 stays sharp; our choice, the paper does not say which form its two-phase
+// tests use), or the normalised form
 // rho_i = sum_j m_j W_ij / sum_j W_ij / n_j (eq. 41, needs NumberDensityPass first);
 // then the pressure from the material's equation of state. Open-boundary buffer neighbours count
 // with the density of their buffer's pressure (boundary/open_boundary.hpp).
@@ -74,6 +75,19 @@ struct EquationOfStatePass {
   PSPH_HD void operator()(int i) const {
     if (mats.is_solid(s.material[i])) return;  // solid/fluid_coupling.hpp
     s.p[i] = pressure_from_density(mats[s.material[i]], s.rho[i], s.rho0[i]);
+  }
+};
+
+// The walls' EOS reference: their initial summed density (and the background pressure).
+template <int D>
+struct SetWallRestDensity {
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  PSPH_HD void operator()(int i) const {
+    if (!mats.is_fluid(s.material[i])) {
+      s.rho0[i] = s.rho[i];
+      s.p[i] = mats[s.material[i]].background_pressure;
+    }
   }
 };
 

@@ -31,7 +31,7 @@ constexpr int kMaxMaterials = 8;
 constexpr int kMaxForceRegions = 4;
 
 // A body force on one material inside a box only: e.g. the gas of a reservoir that drives a
-// drainage through a periodic cell (Pazdniakou 2018 §5.2, digest §7 item 27).
+// drainage through a periodic cell (Pazdniakou 2018 §5.2).
 template <int D>
 struct ForceRegion {
   int material = 0;

@@ -121,7 +121,7 @@ struct FluidForcePass {
       acc += t.pressure + t.artificial;
       visc += tensor ? t.viscous * LaplacianTensor<D>::weight(A, rij) : t.viscous;
       lambda -= V_j * r * r * dw_r;
-      // XSPH over the same material, with the kernel factor restored (eq. 76, digest §7 item 2).
+      // XSPH over the same material, with the kernel factor W_ij that eq. 76 misses.
       if (opt.xsph > Real(0) && mj == mi) xs -= (fi.v - s.v[j]) * (Real(2) * s.m[j] / (fi.rho + s.rho[j]) * kern.W(r));
       if (contact_line && !fluid_j) contact.add(V_j, rij, dw_r, kern.W(r), mats[mj].colour);
       if (contact_line && fluid_j) contact.add_fluid(V_j, rij, dw_r, s.colour[j] - colour_i);

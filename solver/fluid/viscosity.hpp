@@ -11,7 +11,7 @@ namespace psph {
 
 // Coefficient of (v_i - v_j) in the viscous acceleration of i: Morris form with the harmonic-mean
 // viscosity (Pazdniakou eqs. 55-57), 4 mu_i mu_j / (mu_i + mu_j) V_j / rho_i F_ij. A wall takes
-// the fluid's viscosity (digest §7 item 16), so fluid-wall pairs reduce to eq. 55.
+// the fluid's viscosity (our choice: §3.3 gives solids none), so fluid-wall pairs reduce to eq. 55.
 PSPH_HD inline Real viscous_pair_coefficient(Real mu_i, Real mu_j, Real V_j, Real inv_rho_i, Real F_ij) {
   const Real mu_sum = mu_i + mu_j;
   return mu_sum > Real(0) ? Real(4) * mu_i * mu_j / mu_sum * V_j * inv_rho_i * F_ij : Real(0);
@@ -58,6 +58,29 @@ struct ImplicitViscosityOperator {
     });
     if (normalise && lambda > Real(0)) lap *= Real(D) / lambda;
     out[i] = u_i - lap * dt;
+  }
+};
+
+// out = a - b on freely moving fluid particles, 0 on walls and open-boundary buffers (the rows of
+// the implicit viscous system).
+template <int D>
+struct FluidDifference {
+  Vec<D>* out;
+  const Vec<D>* a;
+  const Vec<D>* b;
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  PSPH_HD void operator()(int i) const {
+    out[i] = mats.moves_freely(s.material[i], s.x[i]) ? a[i] - b[i] : Vec<D>::zero();
+  }
+};
+template <int D>
+struct SetFluidVelocity {
+  const Vec<D>* from;
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  PSPH_HD void operator()(int i) const {
+    if (mats.moves_freely(s.material[i], s.x[i])) s.v[i] = from[i];
   }
 };
 

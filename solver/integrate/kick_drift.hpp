@@ -2,7 +2,7 @@
 // Kick and drift updates shared by the leapfrog (Pazdniakou eq. 48) and velocity-Verlet
 // (eq. 49, kick-drift-kick form) integrators. Fluids and elastic solids are kicked; walls are
 // not: they drift with their prescribed velocity (fixed walls have v = 0); rigid particles are
-// placed by their body's motion after the drift (rigid/rigid_motion.hpp).
+// placed by their body's motion after the drift (rigid/rigid_stage.hpp).
 #include <cmath>
 
 #include "fluid/material.hpp"

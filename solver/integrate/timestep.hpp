@@ -1,6 +1,6 @@
 #pragma once
 // Adaptive time step from every active limit (Pazdniakou eqs. 50-52 plus the acoustic limit,
-// digest §7 item 20), written with the smoothing length h_s (R/2 for the cubic spline) as in
+// which the paper omits), written with the smoothing length h_s (R/2 for the cubic spline) as in
 // Morris et al. (1997). Read with h = support radius, as printed in Pazdniakou, eq. 52 allows a
 // step 4x larger, and the Poiseuille cases blow up with it (measured).
 #include <algorithm>
@@ -8,7 +8,30 @@
 #include <limits>
 #include <string>
 
+#include "fluid/material.hpp"
+
 namespace psph {
+
+// What the limits need from the materials, computed here only (the case reader checks a fixed
+// step against them, the engine steps with them): the largest sound speed of any material, the
+// largest kinematic viscosity mu/rho of a fluid (0 with implicit viscosity, which has no viscous
+// limit), the smallest fluid density over the surface tension (0 without surface tension).
+struct TimeStepInputs {
+  double c_max = 0, nu_max = 0, rho_over_sigma = 0;
+};
+inline TimeStepInputs time_step_inputs(const Material* m, int count, bool implicit_viscosity, double surface_tension) {
+  TimeStepInputs in;
+  for (int k = 0; k < count; ++k) {
+    in.c_max = std::max(in.c_max, double(m[k].sound_speed));
+    if (m[k].kind != MaterialKind::Fluid) continue;
+    if (!implicit_viscosity && m[k].viscosity > 0) in.nu_max = std::max(in.nu_max, double(m[k].viscosity / m[k].rest_density));
+    if (surface_tension > 0) {
+      const double r = m[k].rest_density / surface_tension;
+      in.rho_over_sigma = in.rho_over_sigma > 0 ? std::min(in.rho_over_sigma, r) : r;
+    }
+  }
+  return in;
+}
 
 struct TimeStepLimits {
   double acoustic = std::numeric_limits<double>::infinity();      // 0.25 h_s / (c_max + v_max)  eq. 50
@@ -25,7 +48,7 @@ struct TimeStepLimits {
 
 // `nu_max` is the largest kinematic viscosity mu/rho of any fluid; `rho_over_sigma` the smallest
 // fluid density over the surface tension (0 without surface tension), for the capillary-wave
-// limit of Morris (2000, digest §7 item 20); `factor` scales every limit.
+// limit of Morris (2000; not in Pazdniakou 2018); `factor` scales every limit.
 inline TimeStepLimits time_step_limits(double h_s, double c_max, double v_max, double a_max, double nu_max,
                                        double factor, double rho_over_sigma = 0) {
   TimeStepLimits l;
@@ -34,6 +57,9 @@ inline TimeStepLimits time_step_limits(double h_s, double c_max, double v_max, d
   if (nu_max > 0) l.viscous = factor * 0.125 * h_s * h_s / nu_max;
   if (rho_over_sigma > 0) l.capillary = factor * 0.25 * std::sqrt(rho_over_sigma * h_s * h_s * h_s / (2 * M_PI));
   return l;
+}
+inline TimeStepLimits time_step_limits(double h_s, const TimeStepInputs& in, double v_max, double a_max, double factor) {
+  return time_step_limits(h_s, in.c_max, v_max, a_max, in.nu_max, factor, in.rho_over_sigma);
 }
 
 }  // namespace psph

@@ -3,8 +3,8 @@
 // Pazdniakou 2018 §3.1.3, with Morris (2000) reliable normals. Each particle carries a colour:
 // +1 liquid, -1 gas, cos(theta) for a wall (eq. 10: theta measured through the liquid, so a wall
 // of colour +1 is fully wetted by the liquid). Three passes, run only when a case has two fluids:
-//   ColourPass     c_i = sum_j V_j c_j W_ij / sum_j V_j W_ij      (eq. 58, Shepard-normalised,
-//                  digest §7 item 8); walls keep their constant colour cos(theta), or with
+//   ColourPass     c_i = sum_j V_j c_j W_ij / sum_j V_j W_ij      (eq. 58, Shepard-normalised:
+//                  our choice, the paper is silent); walls keep their constant colour cos(theta), or with
 //                  geometric wetting the colour extrapolated from the fluid (wall_wetting.hpp).
 //   NormalPass     n_i = sum_j V_j (c_j - c_i) grad_i W_ij        (eq. 59a: points gas -> liquid)
 //   CurvaturePass  div n^_i = sum_j N_ij V_j (n^_j - n^_i) . grad_i W_ij / sum_j N_ij V_j W_ij
@@ -13,7 +13,7 @@
 //                  curvature is then carried from the particle's own level set to the interface
 //                  (interface_curvature below).
 // The force per unit volume is F_s = 1/2 sigma kappa n with kappa = -div n^ (eqs. 7, 9). The paper's
-// eq. 60 expands to +div n^, the opposite sign (digest §7 item 5); -div n^ is the one for which
+// eq. 60 expands to +div n^, the opposite sign to its eq. 7; -div n^ is the one for which
 // the force on a gas bubble points into the gas, so that p_gas > p_liquid (the Laplace test,
 // validation/laplace_bubble.cpp).
 #include "fluid/material.hpp"

@@ -20,30 +20,27 @@ RunDirectory::RunDirectory(const std::string& path, const std::string& resolved)
   monitors_.open(path + "/monitors.csv");
 }
 
-void RunDirectory::add_monitor_columns(const std::vector<std::string>& names) {
-  if (header_written_) throw std::logic_error("monitor columns added after the first row");
-  extra_columns_.insert(extra_columns_.end(), names.begin(), names.end());
-}
-
 void RunDirectory::log(const std::string& line) {
   std::cout << line << std::endl;
   log_ << line << '\n';
   log_.flush();
 }
 
-void RunDirectory::monitor(Engine& e, const std::vector<double>& extra) {
+void RunDirectory::monitor(Engine& e, const std::vector<MonitorValue>& extra) {
   if (!header_written_) {
     monitors_ << "step,time,dt,dt_limit,kinetic_energy,v_max,a_max,density_deviation_max";
-    for (const auto& c : extra_columns_) monitors_ << ',' << c;
+    for (const auto& m : extra) monitors_ << ',' << m.name, extra_columns_.push_back(m.name);
     monitors_ << '\n';
     header_written_ = true;
   }
-  if (extra.size() != extra_columns_.size()) throw std::logic_error("monitor row and columns differ in number");
+  bool same = extra.size() == extra_columns_.size();
+  for (std::size_t k = 0; same && k < extra.size(); ++k) same = extra[k].name == extra_columns_[k];
+  if (!same) throw std::logic_error("monitor row and columns differ");
   const StepStats s = e.stats();
   monitors_.precision(10);
   monitors_ << e.steps() << ',' << e.time() << ',' << e.last_dt() << ',' << s.dt_limit << ',' << s.kinetic_energy
             << ',' << s.v_max << ',' << s.a_max << ',' << s.density_deviation_max;
-  for (double x : extra) monitors_ << ',' << x;
+  for (const auto& m : extra) monitors_ << ',' << m.value;
   monitors_ << '\n';
   monitors_.flush();
 }

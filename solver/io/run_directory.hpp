@@ -20,10 +20,9 @@ class RunDirectory {
 
   // A line to the terminal and to log.txt.
   void log(const std::string& line);
-  // Columns after the engine's own (step ... density_deviation_max), before the first monitor row.
-  void add_monitor_columns(const std::vector<std::string>& names);
-  // A row of monitors.csv: the engine's statistics, then `extra` (one value per added column).
-  void monitor(Engine& e, const std::vector<double>& extra = {});
+  // A row of monitors.csv: the engine's statistics, then the named `extra` values (the stages'
+  // monitors and the run's own); the first row's names are the columns, later rows repeat them.
+  void monitor(Engine& e, const std::vector<MonitorValue>& extra = {});
   void write_summary(const nlohmann::json& j) const;
   // Writes checkpoints/step_<step>.ckpt and deletes the oldest beyond `keep`; returns its path.
   std::string save_checkpoint(Engine& e, const std::string& case_name, int keep);

@@ -2,9 +2,9 @@
 // Two-phase monitors (monitors.csv, one row per monitor step): in a box region, the saturation of
 // each phase, the mean phase pressures and the capillary pressure, the mean phase velocities, the
 // first time a connected gas cluster joins the region's inlet and outlet faces (percolation,
-// Pazdniakou 2018 §5.2, digest §7 item 28), and the largest speed relative to sigma/mu (the
-// spurious currents of a static case). Computed on the host from the downloaded fields, at the
-// monitor cadence only; present only in cases with a liquid and a gas.
+// Pazdniakou 2018 §5.2.2, Table 5; the paper does not define it, this is ours), and the largest
+// speed relative to sigma/mu (the spurious currents of a static case). Computed on the host from
+// the downloaded fields, at the monitor cadence only; present only in cases with a liquid and a gas.
 #include <array>
 #include <string>
 #include <vector>

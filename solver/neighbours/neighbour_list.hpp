@@ -5,13 +5,16 @@
 // pairs, each still tested against R. Fluid neighbours come first in each list, so wall passes
 // can stop after them.
 // Layout: neighbour k of particle i is at i * stride_i + k * stride_k: row-major on the CPU,
-// column-major on the GPU (coalesced loads across a warp).
+// column-major on the GPU (coalesced loads across a warp). Offsets are 64-bit: capacity x count
+// passes 2^31 near 50 million particles, below what one GPU holds.
 #include <cstdint>
 
 #include "fluid/material.hpp"
 #include "neighbours/cell_grid.hpp"
 
 namespace psph {
+
+using ListOffset = std::int64_t;
 
 template <int D>
 struct NeighbourList {
@@ -20,7 +23,7 @@ struct NeighbourList {
   const int* index;
   const int* count;        // neighbours of i
   const int* fluid_count;  // of which fluid (listed first)
-  int stride_i, stride_k;
+  ListOffset stride_i, stride_k;
   Real support2;           // R^2: listed pairs beyond the support are skipped
 
   template <class F>
@@ -37,9 +40,9 @@ struct NeighbourList {
   template <class F>
   PSPH_HD PSPH_PAIR void visit(int i, int begin, int end, F& f) const {
     const Vec<D> xi = x[i];
-    const int* row = index + i * stride_i;
+    const int* row = index + ListOffset(i) * stride_i;
     for (int k = begin; k < end; ++k) {
-      const int j = row[k * stride_k];
+      const int j = row[ListOffset(k) * stride_k];
       const Vec<D> d = grid.separation(xi, x[j]);
       const Real r2 = norm2(d);
       if (r2 < support2) f(j, d, sqrt(r2));
@@ -65,12 +68,13 @@ struct BuildNeighbourList {
   int* index;
   int* count;
   int* fluid_count;
-  int capacity, stride_i, stride_k;
+  int capacity;
+  ListOffset stride_i, stride_k;
   PSPH_HD void operator()(int i) const {
     int n = 0;
-    int* row = index + i * stride_i;
+    int* row = index + ListOffset(i) * stride_i;
     auto add = [&](int j, const Vec<D>&, Real) {
-      if (n < capacity) row[n * stride_k] = j;
+      if (n < capacity) row[ListOffset(n) * stride_k] = j;
       ++n;
     };
     const bool full = no_fluid || mats.is_dynamic(material[i]) || (mirror && mirror[i] >= 0);

@@ -27,7 +27,7 @@ struct ReferenceNeighbours {
     const int row = id[i];
     const Vec<D> xi = x0[i];
     for (int k = 0; k < count[row]; ++k) {
-      const int j = index_of_id[ids[row * capacity + k]];
+      const int j = index_of_id[ids[ListOffset(row) * capacity + k]];
       const Vec<D> d = grid.separation(xi, x0[j]);
       const Real r2 = norm2(d);
       if (r2 < support2) f(j, d, sqrt(r2));
@@ -51,7 +51,7 @@ struct RecordReferenceNeighbours {
     if (mats.is_elastic(s.material[i]) || (s.mirror && s.mirror[i] >= 0))
       nb.for_each(i, [&](int j, const Vec<D>&, Real) PSPH_PAIR {
         const int mj = s.material[j];
-        if (!mats.is_fluid(mj) && !mats.is_rigid(mj) && n < capacity) ids[row * capacity + n++] = s.id[j];
+        if (!mats.is_fluid(mj) && !mats.is_rigid(mj) && n < capacity) ids[ListOffset(row) * capacity + n++] = s.id[j];
       });
     count[row] = n;
   }

@@ -58,6 +58,13 @@ class RigidBodies {
   std::vector<RigidBodyState> bodies_;
 };
 
+// The bodies of a scene at t = 0 (rigid/rigid_scene.hpp builds them from the particles).
+struct SceneRigidBodies {
+  std::vector<RigidBodyState> state;          // at t = 0
+  std::vector<std::vector<int>> members;      // particle indices (= ids) of each body
+  std::vector<std::vector<Vec3d>> offsets;    // each member's position relative to the centre of mass
+};
+
 // Mass, centre of mass (eq. 62) and inertia (eq. 64) of point masses m at positions x (3 per
 // point), with the velocity V and angular momentum L of a body moving at v_cm and omega.
 RigidBodyState rigid_body_from_points(const std::vector<double>& m, const std::vector<Vec3d>& x, const Vec3d& v_cm,

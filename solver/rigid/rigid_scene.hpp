@@ -8,12 +8,6 @@
 
 namespace psph {
 
-struct SceneRigidBodies {
-  std::vector<RigidBodyState> state;          // at t = 0
-  std::vector<std::vector<int>> members;      // particle indices (= ids) of each body
-  std::vector<std::vector<Vec3d>> offsets;    // each member's position relative to the centre of mass
-};
-
 SceneRigidBodies rigid_bodies_of(const Scene& sc);
 
 // Adds each body's rotation omega x (x - X) to its particles' velocities.

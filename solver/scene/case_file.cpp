@@ -150,9 +150,10 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     }
     if (sc.materials.size() > static_cast<std::size_t>(kMaxMaterials))
       top.fail("materials", "expected at most " + std::to_string(kMaxMaterials) + " materials");
-    // Walls take the density of the densest fluid unless given, and the largest sound speed (digest
-    // §7 item 17). The densest: a wall's volume m/rho follows its pressure through rho0 + p/c^2, so
-    // a wall under water with a gas's rest density would shrink by the water's head over 1 kg/m^3.
+    // Walls take the density of the densest fluid unless given, and the largest sound speed (our
+    // choice: Pazdniakou 2018 §3.3, eq. 74, gives immobile walls neither). The densest: a wall's
+    // volume m/rho follows its pressure through rho0 + p/c^2, so a wall under water with a gas's
+    // rest density would shrink by the water's head over 1 kg/m^3.
     // Without fluids, walls only clamp an elastic solid and take its density.
     for (const char* key :
          {"formulation", "model", "damping_rate", "coupling", "artificial_viscosity", "artificial_viscosity_beta", "xsph"})
@@ -178,11 +179,11 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     if (!stress && o.solid_model == SolidModel::SaintVenantKirchhoff)
       solid.fail("model", "expected \"linear\" with formulation = \"displacement\" (Saint Venant-Kirchhoff is "
                           "written in the stress form)");
+    const std::string cp = solid.choice("coupling", {"traction", "pair", "pair_eos"}, stress ? "traction" : "pair");
+    o.solid_coupling = cp == "traction" ? SolidCoupling::Traction : cp == "pair" ? SolidCoupling::Pair : SolidCoupling::PairEos;
     if (o.solid_coupling == SolidCoupling::PairEos && o.solid_model == SolidModel::SaintVenantKirchhoff)
       solid.fail("coupling", "expected \"traction\" or \"pair\" with model = \"saint_venant_kirchhoff\" (eq. 74's "
                              "pressure -k tr(eps) is a small-strain one)");
-    const std::string cp = solid.choice("coupling", {"traction", "pair", "pair_eos"}, stress ? "traction" : "pair");
-    o.solid_coupling = cp == "traction" ? SolidCoupling::Traction : cp == "pair" ? SolidCoupling::Pair : SolidCoupling::PairEos;
     if (!coupled && solid.has("coupling"))
       solid.fail("coupling", "expected a case with both fluids and elastic solids for it to apply to");
     if (!stress && o.solid_coupling == SolidCoupling::Traction)
@@ -370,16 +371,11 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
     r.finish();
     if (o.fixed_dt > 0) {
       // The limits known before the run: acoustic (at rest) and viscous (Pazdniakou eqs. 50-52).
-      double c_max = 0, nu_max = 0, rho_min = 0;
-      for (const auto& m : sc.materials) {
-        c_max = std::max(c_max, double(m.props.sound_speed));
-        if (m.props.kind != MaterialKind::Fluid) continue;
-        if (!o.implicit_viscosity) nu_max = std::max(nu_max, double(m.props.viscosity / m.props.rest_density));
-        rho_min = rho_min > 0 ? std::min(rho_min, double(m.props.rest_density)) : double(m.props.rest_density);
-      }
+      std::vector<Material> props;
+      for (const auto& m : sc.materials) props.push_back(m.props);
+      const TimeStepInputs in = time_step_inputs(props.data(), int(props.size()), o.implicit_viscosity, o.surface_tension);
       const double hs = o.support_radius / support_per_smoothing_length(o.kernel);
-      const double rho_over_sigma = o.surface_tension > 0 ? rho_min / o.surface_tension : 0.0;
-      const TimeStepLimits lim = time_step_limits(hs, c_max, 0.0, 0.0, nu_max, 1.0, rho_over_sigma);
+      const TimeStepLimits lim = time_step_limits(hs, in, 0.0, 0.0, 1.0);
       const double limit = lim.min();
       if (o.fixed_dt > 2 * limit)
         throw CaseError(file + ": solver.dt: a fixed step of " + CaseReader::fmt(o.fixed_dt) +

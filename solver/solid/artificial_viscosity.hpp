@@ -7,7 +7,7 @@
 //   approaching pairs (0 otherwise), nu_ij = -h_s (v_ij . r_ij) / (r_ij^2 + 0.01 h_s^2)   (eqs. 2.64-2.65,
 //   written with the sign that makes the force repulsive);
 //   v_xsph_i = epsilon sum_j m_j 2 (v_j - v_i) / (rho_i + rho_j) W_ij over the same material (eq. 2.66
-//   with the kernel factor of Monaghan's XSPH, Pazdniakou digest §2.9): moves the particle only.
+//   with Monaghan's kernel factor W_ij, missing there and in Pazdniakou eq. 76): moves the particle only.
 // Pair terms are antisymmetric: momentum is kept. The energy they take is not in the monitors'
 // dissipated_energy (the damping's only). Runs after the solid's force pass when either is on.
 #include "fluid/material.hpp"

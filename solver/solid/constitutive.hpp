@@ -1,10 +1,10 @@
 #pragma once
 // Small-strain isotropic elasticity with a damage variable that degrades the moduli and a
-// unilateral (crack-closure) effect (Deptulski 2021 eq. 2.84 and §4.1.3, digest §3.3):
+// unilateral (crack-closure) effect (Deptulski 2021 eq. 2.84 and §4.1.3, eq. 4.18a):
 //   sigma = k_eff tr(eps) I + 2 mu (1 - d) dev(eps),   k_eff = k (1 - d) if tr(eps) > 0, else k,
 // so a damaged particle carries no tension but recovers its bulk stiffness when its crack closes
 // under compression. dev(eps) = eps - tr(eps)/3 I is the 3D deviator in every dimension: in 2D the
-// solid is in plane strain with 3D moduli (digest O-S4).
+// solid is in plane strain with 3D moduli (the thesis never says which; its 3D deviator implies it).
 #include "core/vec.hpp"
 
 namespace psph {
@@ -34,7 +34,7 @@ PSPH_HD inline Mat<D> small_strain_stress(const Mat<D>& eps, Real k, Real mu, Re
   return s;
 }
 
-// Saint Venant-Kirchhoff (Deptulski 2021 §2.4.1, digest §2.8.1): from H = grad u in the reference
+// Saint Venant-Kirchhoff (Deptulski 2021 §2.4.1, eqs. 2.67-2.74): from H = grad u in the reference
 // configuration, F = I + H, the Green-Lagrange strain E = (H + H^T + H^T H) / 2, the second
 // Piola-Kirchhoff stress S = k tr(E) I + 2 mu dev(E) (the small-strain law applied to E, with its
 // damage argument), the first P = F S, and the Cauchy stress sigma = P F^T / det F (for output and

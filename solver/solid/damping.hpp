@@ -1,8 +1,8 @@
 #pragma once
 // Mass-proportional damping of elastic solids, a -= zeta v (in the solid force passes), for
 // quasi-static loading: Pazdniakou (2018) §3.1.4 damps the solid with a parameter theta in its
-// Verlet update, v <- (1 - theta) v per step, which is zeta = theta / dt. No values are given
-// (digest §7 item 15); zeta near the lowest mode's angular frequency damps it within a period.
+// Verlet update, v <- (1 - theta) v per step, which is zeta = theta / dt. The paper gives no value;
+// we choose zeta near the lowest mode's angular frequency, which damps it within a period.
 #include "fluid/material.hpp"
 #include "state/particles.hpp"
 

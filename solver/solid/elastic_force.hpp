@@ -1,8 +1,8 @@
 #pragma once
 // Small-strain linear elasticity in displacement form (Navier-Cauchy, Pazdniakou eqs. 16-17):
 //   rho a = mu lap(u) + (k + mu/3) grad(div u)
-// with the second derivatives of Pazdniakou eq. 61 (the r^2 fix of digest §2.6) / Deptulski eq. 2.89
-// (the fixes of digest §2.8.3: the cross terms act on u_y, u_z, and the sign):
+// with the second derivatives of Pazdniakou eq. 61 (r^2 in its first denominator, misprinted as r) /
+// Deptulski eq. 2.89 (his eq. 2.90 misprints the cross terms on u_x, and the sign; fixed here):
 //   D_ag(f)_i = sum_j V_j (c e_a e_g - delta_ag) (f_i - f_j) F_ij,   c = d + 2,  e = r_ij / r,
 // F_ij = (dW/dr)/r. Summed over the components this gives, per pair,
 //   mu sum_g D_gg(u_a) + (k + mu/3) sum_g D_ag(u_g)
@@ -14,8 +14,8 @@
 // them in 2D and 3D. The same transverse term resists rigid rotations where the support is
 // truncated (free surfaces): a bending plate comes out far too stiff (VALIDATION.md).
 // Walls in reach clamp the solid through the displacement they present (solid/clamp.hpp).
-// Pair moduli are harmonic means (Deptulski eq. 2.45, digest O-D4), so that damage can later lower
-// them per particle.
+// Pair moduli are harmonic means (as in Deptulski eq. 2.45; his eq. 2.90 assumes uniform moduli, so
+// this is our choice), so that damage can later lower them per particle.
 #include "fluid/material.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"

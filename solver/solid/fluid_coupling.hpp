@@ -23,8 +23,8 @@
 // (an added-mass loop: the elastic cube of VALIDATION.md blew up in 54 steps).
 #include "boundary/wall_pressure.hpp"
 #include "fluid/momentum.hpp"
-#include "scene/scene.hpp"
 #include "solid/constitutive.hpp"
+#include "solid/solid_options.hpp"
 #include "solid/strain.hpp"
 
 namespace psph {

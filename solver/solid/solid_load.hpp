@@ -2,11 +2,14 @@
 // Loads on groups of elastic particles (`[[solid_load]]`; groups chosen by box at the start):
 //   traction: an external force t A on each particle of the group, A = spacing^(D-1) its share of
 //             the surface, t in Pa: a confining stress sigma on a face is t = -sigma n_out on its
-//             outermost layer (Pazdniakou digest §7 item 24, Deptulski digest O-A4);
+//             outermost layer (our choice: Pazdniakou 2018 §5.2 and Deptulski 2021 §5.2 apply it
+//             to the lateral sides without saying how);
 //   velocity: the particles move at an imposed velocity (an imposed displacement v x duration,
-//             then held): they still take part in the solid's sums (Deptulski digest O-N6).
+//             then held): they still take part in the solid's sums (our choice: Deptulski 2021
+//             does not say how he imposes displacements or clamps).
 // A particle may belong to several loads (a corner to two faces' tractions): a bit per load.
 // Applied after every other force (engine/simulation.hpp), so that an imposed velocity holds.
+#include <array>
 #include <cstdint>
 
 #include "fluid/material.hpp"
@@ -15,6 +18,17 @@
 namespace psph {
 
 constexpr int kMaxSolidLoads = 4;
+
+// A load on the elastic particles of one material inside a box (as read from the case).
+struct SceneSolidLoad {
+  int material = 0;
+  std::array<double, 3> lower{0, 0, 0}, upper{0, 0, 0};
+  bool velocity = false;                  // imposed velocity, else traction
+  std::array<double, 3> value{0, 0, 0};   // traction (Pa) or velocity (m/s)
+  double ramp_time = 0;  // s: a traction grows linearly from zero over this time
+  double duration = 0;   // s: an imposed velocity stops after this time (0: never)
+};
+
 enum class SolidLoadKind : int { Traction = 0, Velocity = 1 };
 
 template <int D>

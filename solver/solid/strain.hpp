@@ -1,7 +1,7 @@
 #pragma once
 // Strain and stress of an elastic solid (the stress form's first pass, and output):
-//   eps_i = sym sum_j V_j (u_j - u_i) (x) K_i grad W~_ij   (Deptulski eq. 2.82 with the fixes of
-//   digest O-S2: displacements, symmetrised; the mixed correction eq. 2.63b, kernels/corrections.hpp)
+//   eps_i = sym sum_j V_j (u_j - u_i) (x) K_i grad W~_ij   (Deptulski eq. 2.82, printed with positions
+//   r for u and unsymmetrised, cf. eq. 1.28; the mixed correction eq. 2.63b, kernels/corrections.hpp)
 //   sigma_i = k tr(eps) I + 2 mu dev(eps)                  (eq. 2.84, constitutive.hpp)
 // or, with [solid] model = "saint_venant_kirchhoff" (large strain, total Lagrangian, Deptulski
 // §2.4.1), F = I + grad u, E = (F^T F - I)/2, S = k tr(E) I + 2 mu dev(E), P = F S (constitutive.hpp),

@@ -1,6 +1,6 @@
 #pragma once
 // Small-strain elasticity in stress form with the mixed kernel and gradient correction (Deptulski
-// 2021 §2.4.2, digest §2.8.2):
+// 2021 §2.4.2, eqs. 2.82-2.87):
 //   a_i = 1/rho_i sum_j V_j (sigma_i g_ij - sigma_j g_ji),   g_ij = K_i grad W~_ij   (eq. 2.86)
 // with the strain and stress of solid/strain.hpp. g_ij != -g_ji once corrected, hence two terms;
 // the forces are -dE/du of the elastic energy E = sum_i V_i sigma_i : eps_i / 2 (the solid's

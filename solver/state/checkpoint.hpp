@@ -22,6 +22,14 @@ struct Checkpoint {
   double dissipated_energy = 0;  // by the solids' damping, from the run's start (J)
   std::vector<double> rigid_bodies;  // the rigid bodies' motion (rigid/rigid_bodies.hpp, pack())
   std::vector<CheckpointField> fields;
+
+  // The field of that name (the last, if listed twice), null if none.
+  const CheckpointField* field(const std::string& name) const {
+    const CheckpointField* f = nullptr;
+    for (const auto& g : fields)
+      if (g.name == name) f = &g;
+    return f;
+  }
 };
 
 }  // namespace psph

@@ -61,4 +61,15 @@ std::vector<double> compute_derived_field(const std::string& name, int dimension
   throw std::invalid_argument("unknown particle field '" + name + "'");
 }
 
+std::vector<std::string> available_field_names(const FieldRegistry& registered) {
+  std::vector<std::string> names;
+  for (const auto& f : registered.all()) names.push_back(f.info.name);
+  for (const auto& d : derived_fields()) {
+    bool ok = true;
+    for (const auto& src : d.sources) ok &= registered.has(src);
+    if (ok) names.push_back(d.info.name);
+  }
+  return names;
+}
+
 }  // namespace psph

@@ -23,6 +23,9 @@ struct DerivedField {
 };
 const std::vector<DerivedField>& derived_fields();
 
+// The registered fields' names, then the derived fields whose sources are all registered.
+std::vector<std::string> available_field_names(const FieldRegistry& registered);
+
 // Computes derived field `name` (components interleaved). `source(name)` returns a registered field;
 // `materials[k]` is material index k.
 std::vector<double> compute_derived_field(const std::string& name, int dimension, const std::vector<Material>& materials,

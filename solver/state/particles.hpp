@@ -14,46 +14,46 @@ namespace psph {
 template <int D>
 struct ParticleView {
   int n = 0;
-  Vec<D>* x;          // position
-  Vec<D>* v;          // velocity (prescribed for walls)
-  Vec<D>* a;          // acceleration
-  Vec<D>* v_xsph;     // XSPH correction added to the drift velocity
-  Vec<D>* v_noslip;   // walls: velocity seen by the viscous term (no-slip extrapolation)
-  Vec<D>* lap_v;      // fluids: Laplacian of the velocity from the last force pass
-  Real* rho;          // density
-  Real* drho;         // d rho / dt (continuity)
-  Real* p;            // pressure
-  Real* m;            // mass
-  Real* rho0;         // per-particle reference density of the EOS
-  Real* number_density;  // sum_j W_ij (for eq. 41)
-  std::uint8_t* material;
-  std::int32_t* id;   // particle id at creation, to follow particles across reorderings
-  const std::uint8_t* near_fluid;  // 1 where a fluid particle may be within the support (neighbours/)
+  Vec<D>* x = nullptr;          // position
+  Vec<D>* v = nullptr;          // velocity (prescribed for walls)
+  Vec<D>* a = nullptr;          // acceleration
+  Vec<D>* v_xsph = nullptr;     // XSPH correction added to the drift velocity
+  Vec<D>* v_noslip = nullptr;   // walls: velocity seen by the viscous term (no-slip extrapolation)
+  Vec<D>* lap_v = nullptr;      // fluids: Laplacian of the velocity from the last force pass
+  Real* rho = nullptr;          // density
+  Real* drho = nullptr;         // d rho / dt (continuity)
+  Real* p = nullptr;            // pressure
+  Real* m = nullptr;            // mass
+  Real* rho0 = nullptr;         // per-particle reference density of the EOS
+  Real* number_density = nullptr;  // sum_j W_ij (for eq. 41)
+  std::uint8_t* material = nullptr;
+  std::int32_t* id = nullptr;   // particle id at creation, to follow particles across reorderings
+  const std::uint8_t* near_fluid = nullptr;  // 1 where a fluid particle may be within the support (neighbours/)
   // Two-fluid cases only (null otherwise): interface/surface_tension.hpp.
-  Real* colour;             // smoothed colour c (eq. 58)
-  Vec<D>* colour_gradient;  // n = grad c (eq. 59a)
-  Real* curvature;          // kappa = -div n^ (eqs. 7, 60)
+  Real* colour = nullptr;             // smoothed colour c (eq. 58)
+  Vec<D>* colour_gradient = nullptr;  // n = grad c (eq. 59a)
+  Real* curvature = nullptr;          // kappa = -div n^ (eqs. 7, 60)
   // Elastic solids only (null otherwise): solid/elastic_force.hpp.
-  Vec<D>* x0;  // reference (initial) position
-  Vec<D>* u;   // displacement x - x0
-  Mat<D>* strain;  // small strain (solid/strain.hpp)
-  Mat<D>* stress;  // Cauchy stress
-  Real* shepard;   // the gradient correction S_i, G_i, K_i of the strain pass (solid/strain.hpp)
-  Vec<D>* shepard_grad;
-  Mat<D>* kcorr;
-  std::int32_t* mirror;       // clamps: id of the mirror partner, -1 if none (solid/clamp_partners.hpp)
-  std::int32_t* index_of_id;  // current index of each id (clamps, rigid bodies)
+  Vec<D>* x0 = nullptr;  // reference (initial) position
+  Vec<D>* u = nullptr;   // displacement x - x0
+  Mat<D>* strain = nullptr;  // small strain (solid/strain.hpp)
+  Mat<D>* stress = nullptr;  // Cauchy stress
+  Real* shepard = nullptr;   // the gradient correction S_i, G_i, K_i of the strain pass (solid/strain.hpp)
+  Vec<D>* shepard_grad = nullptr;
+  Mat<D>* kcorr = nullptr;
+  std::int32_t* mirror = nullptr;       // clamps: id of the mirror partner, -1 if none (solid/clamp_partners.hpp)
+  std::int32_t* index_of_id = nullptr;  // current index of each id (clamps, rigid bodies)
   // Fluids with elastic solids only (null otherwise): solid/fluid_coupling.hpp.
-  Real* visc_scale;  // a fluid particle's Laplacian correction D / lambda of the last force pass
-  std::uint8_t* fluid_contact;  // a solid particle with fluid within its support
-  Real* p_ambient;              // the fluid's pressure carried into an elastic body's surface layer
+  Real* visc_scale = nullptr;  // a fluid particle's Laplacian correction D / lambda of the last force pass
+  std::uint8_t* fluid_contact = nullptr;  // a solid particle with fluid within its support
+  Real* p_ambient = nullptr;              // the fluid's pressure carried into an elastic body's surface layer
   // Rigid bodies only (null otherwise): rigid/.
-  std::int32_t* body;  // the rigid body a particle belongs to, -1 if none
+  std::int32_t* body = nullptr;  // the rigid body a particle belongs to, -1 if none
   // Large-strain solids only (null otherwise): solid/constitutive.hpp.
-  Mat<D>* piola;    // first Piola-Kirchhoff stress P = F S
-  Mat<D>* defgrad;  // deformation gradient F
+  Mat<D>* piola = nullptr;    // first Piola-Kirchhoff stress P = F S
+  Mat<D>* defgrad = nullptr;  // deformation gradient F
   // Loaded elastic particles only (null otherwise): solid/solid_load.hpp.
-  std::int32_t* load_mask;  // the [[solid_load]]s a particle belongs to, bit g for load g
+  std::int32_t* load_mask = nullptr;  // the [[solid_load]]s a particle belongs to, bit g for load g
 };
 
 template <class T, class B>
@@ -89,73 +89,32 @@ class ParticleState {
     a.zero(), v_xsph.zero(), v_noslip.zero(), lap_v.zero(), drho.zero(), p.zero(), number_density.zero();
   }
 
+  // Every member by name: a positional aggregate would let a pointer placed out of order take a
+  // neighbour's slot of the same type.
   ParticleView<D> view() {
-    return ParticleView<D>{n_,         x.data(),    v.data(),    a.data(),  v_xsph.data(), v_noslip.data(), lap_v.data(),
-                           rho.data(), drho.data(), p.data(),    m.data(),  rho0.data(),
-                           number_density.data(),   material.data(), id.data(), near_fluid.data(),
-                           colour.data(), colour_gradient.data(), curvature.data(), x0.data(), u.data(),
-                           strain.data(), stress.data(), shepard.data(), shepard_grad.data(), kcorr.data(),
-                           mirror.data(), index_of_id.data(), visc_scale.data(),
-                           fluid_contact.data(), p_ambient.data(), body.data(), piola.data(), defgrad.data(),
-                           load_mask.data()};
+    ParticleView<D> v;
+    v.n = n_;
+    v.x = x.data(), v.v = this->v.data(), v.a = a.data(), v.v_xsph = v_xsph.data();
+    v.v_noslip = v_noslip.data(), v.lap_v = lap_v.data();
+    v.rho = rho.data(), v.drho = drho.data(), v.p = p.data(), v.m = m.data(), v.rho0 = rho0.data();
+    v.number_density = number_density.data();
+    v.material = material.data(), v.id = id.data(), v.near_fluid = near_fluid.data();
+    v.colour = colour.data(), v.colour_gradient = colour_gradient.data(), v.curvature = curvature.data();
+    v.x0 = x0.data(), v.u = u.data(), v.strain = strain.data(), v.stress = stress.data();
+    v.shepard = shepard.data(), v.shepard_grad = shepard_grad.data(), v.kcorr = kcorr.data();
+    v.mirror = mirror.data(), v.index_of_id = index_of_id.data();
+    v.visc_scale = visc_scale.data(), v.fluid_contact = fluid_contact.data(), v.p_ambient = p_ambient.data();
+    v.body = body.data(), v.piola = piola.data(), v.defgrad = defgrad.data(), v.load_mask = load_mask.data();
+    return v;
   }
 
-  // Allocates and registers the interface fields (a case with two fluids and surface tension).
-  void enable_interface() {
-    if (interface_) return;
-    interface_ = true;
-    colour.resize(n_), colour_gradient.resize(n_), curvature.resize(n_);
-    colour.zero(), colour_gradient.zero(), curvature.zero();
-    reg(colour, FieldType::Real, 1, "colour", "-", "smoothed colour function, +1 liquid, -1 gas (Pazdniakou eq. 58)");
-    reg(colour_gradient, FieldType::Real, D, "colour_gradient", "1/m", "interface normal n = grad c (eq. 59a)");
-    reg(curvature, FieldType::Real, 1, "curvature", "1/m", "interface curvature -div n^ (eqs. 7, 60)");
-  }
-
-  // Allocates and registers the reference positions and displacements (a case with an elastic solid).
-  void enable_solid() {
-    if (solid_) return;
-    solid_ = true;
-    x0.resize(n_), u.resize(n_), strain.resize(n_), stress.resize(n_);
-    shepard.resize(n_), shepard_grad.resize(n_), kcorr.resize(n_), mirror.resize(n_);
-    index_of_id.resize(n_);
-    u.zero(), strain.zero(), stress.zero();
-    reg(x0, FieldType::Real, D, "reference_position", "m", "initial position (small-strain reference configuration)");
-    reg(u, FieldType::Real, D, "displacement", "m", "displacement x - x0 of elastic solids");
-    reg(strain, FieldType::Real, D * D, "strain", "-", "small strain sym(grad u) (large strain: Green-Lagrange), row-major");
-    reg(stress, FieldType::Real, D * D, "stress", "Pa", "Cauchy stress (tension positive), row-major");
-    reg(mirror, FieldType::Int, 1, "clamp_mirror", "-", "id of a clamp wall's mirror partner and back, -1 if none");
-  }
-
-  // A fluid with elastic solids: the fluid force pass keeps each particle's viscous correction for
-  // the solid's reaction, the solid its contact and ambient pressure (solid/fluid_coupling.hpp);
-  // written and read within one force evaluation: not registered.
-  void enable_coupling() {
-    visc_scale.resize(n_), fluid_contact.resize(n_), p_ambient.resize(n_);
-    visc_scale.zero(), fluid_contact.zero(), p_ambient.zero();
-  }
-
-  // Registers the rigid body of each particle (a case with rigid bodies, rigid/); the index of each
-  // id finds a body's particles after a reordering.
-  void enable_rigid(const std::vector<std::int32_t>& body_of_particle) {
-    body.upload(body_of_particle);
-    index_of_id.resize(n_);
-    reg(body, FieldType::Int, 1, "rigid_body", "-", "the rigid body a particle belongs to, -1 if none");
-  }
-
-  // Large strain (Saint Venant-Kirchhoff): the Piola stress of the strain pass (recomputed before
-  // every use: not registered) and the deformation gradient (registered: the fluid reads a solid's
-  // volume det F before the next strain pass, so it must follow reorderings and checkpoints).
-  void enable_large_strain() {
-    piola.resize(n_);
-    piola.zero();
-    defgrad.upload(std::vector<Mat<D>>(n_, Mat<D>::identity()));  // undeformed until the first strain pass
-    reg(defgrad, FieldType::Real, D * D, "deformation_gradient", "-", "F = I + grad u (large strain), row-major");
-  }
-
-  // Registers each particle's [[solid_load]]s, bit g for load g (solid/solid_load.hpp).
-  void enable_solid_loads(const std::vector<std::int32_t>& group_of_particle) {
-    load_mask.upload(group_of_particle);
-    reg(load_mask, FieldType::Int, 1, "solid_load_mask", "-", "the [[solid_load]]s a particle belongs to: bit g for load g");
+  // Registers an allocated array under a name: checkpoints, reorderings and outputs then carry it.
+  // The stages register the fields they own (fluid/, interface/, solid/, rigid/ *_stage.hpp).
+  template <class T>
+  void add_field(DeviceArray<T, B>& arr, int comps, const char* name, const char* unit, const char* what) {
+    constexpr FieldType type = std::is_same_v<T, std::uint8_t> ? FieldType::Byte
+                               : std::is_same_v<T, std::int32_t> ? FieldType::Int : FieldType::Real;
+    reg(arr, type, comps, name, unit, what);
   }
 
   // Reorders every registered field: field[i] <- field[perm[i]].
@@ -168,19 +127,21 @@ class ParticleState {
   DeviceArray<std::uint8_t, B> material;
   DeviceArray<std::int32_t, B> id;
   DeviceArray<std::uint8_t, B> near_fluid;  // not registered: recomputed after every reordering
-  DeviceArray<Real, B> colour, curvature;     // empty unless enable_interface()
+  // Empty unless a stage allocates them: the interface stage's,
+  DeviceArray<Real, B> colour, curvature;
   DeviceArray<Vec<D>, B> colour_gradient;
-  DeviceArray<Vec<D>, B> x0, u;          // empty unless enable_solid()
+  // the elastic stage's (solid/elastic_stage.hpp),
+  DeviceArray<Vec<D>, B> x0, u;
   DeviceArray<Mat<D>, B> strain, stress;
   DeviceArray<Real, B> shepard;  // the strain pass's correction, recomputed every step: not registered
   DeviceArray<Vec<D>, B> shepard_grad;
   DeviceArray<Mat<D>, B> kcorr;
   DeviceArray<std::int32_t, B> mirror;
   DeviceArray<std::int32_t, B> index_of_id;  // not registered: recomputed after every reordering
-  DeviceArray<std::int32_t, B> body;         // empty unless enable_rigid()
-  DeviceArray<std::int32_t, B> load_mask;   // empty unless enable_solid_loads()
-  DeviceArray<Mat<D>, B> piola, defgrad;     // empty unless enable_large_strain()
-  DeviceArray<Real, B> visc_scale, p_ambient;  // empty unless enable_coupling()
+  DeviceArray<Mat<D>, B> piola, defgrad;     // large strain only
+  DeviceArray<std::int32_t, B> body;         // the rigid stage's (rigid/rigid_stage.hpp)
+  DeviceArray<std::int32_t, B> load_mask;    // the solid loads' (solid/solid_load_stage.hpp)
+  DeviceArray<Real, B> visc_scale, p_ambient;  // the fluid-solid coupling's (solid/coupling_stage.hpp)
   DeviceArray<std::uint8_t, B> fluid_contact;
 
  private:
@@ -241,7 +202,6 @@ class ParticleState {
   }
 
   int n_ = 0;
-  bool interface_ = false, solid_ = false;
   FieldRegistry registry_;
   DeviceArray<Vec<D>, B> scratch_vec_;
   DeviceArray<Mat<D>, B> scratch_mat_;

@@ -18,7 +18,8 @@ double kernel_integral(int dimension, KernelType type, int per_support) {
 
 std::vector<double> deptulski_table_2_1_pairs() {
   // Bar L = 1 m, N = 5 cell-centred points at 50.1 ... 50.9 m, V_b = 0.2 m; "h = 2.8 dx" read as a
-  // support radius of 0.56 m (cubic spline with smoothing length 1.4 dx), digest §4.2.
+  // support radius of 0.56 m (cubic spline with smoothing length 1.4 dx), Deptulski
+  // §2.5: his h here is not the spline's; read as the support, it reproduces Table 2.1.
   std::vector<Vec<1>> pts(5);
   for (int i = 0; i < 5; ++i) pts[i][0] = Real(50.1 + 0.2 * i);
   const Real lo[1] = {Real(50.0)}, hi[1] = {Real(51.0)};
@@ -104,7 +105,7 @@ std::vector<ValidationRecord> operator_checks() {
     out.push_back(make_record("kernels", std::string("Deptulski Table 2.1 pair ") + pair_names[k], pairs[k], ref[k],
                               std::fabs(pairs[k] - ref[k]), 1e-3));
   }
-  // Deptulski §2.5 (digest §4.2-4.5): the quartic divergence, his own error beside ours.
+  // Deptulski §2.5 (Table 2.2, §2.5.2-2.5.4): the quartic divergence, his own error beside ours.
   const DivergenceErrors bar = quartic_divergence(1, 5);
   out.push_back(make_record("kernels", "quartic divergence, 1D, 5 points: relative error at point 4 (thesis 0.202 %)",
                             bar.point4, 0.00202, std::fabs(bar.point4 - 0.00202), 1e-4));

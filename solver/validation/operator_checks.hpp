@@ -1,7 +1,7 @@
 #pragma once
 // Checks of the SPH operators against exact values: kernel normalisation in 1D/2D/3D, Deptulski
-// (2021) Table 2.1 (pair contributions of the corrected gradient, digest §4.2) and the divergence
-// tests of his §2.5 (quartic fields, particle density and disorder, 1D to 3D; digest §4.2-4.5).
+// (2021) Table 2.1 (pair contributions of the corrected gradient, §2.5.1) and the divergence
+// tests of his §2.5 (quartic fields, particle density and disorder, 1D to 3D; §2.5.1-2.5.4).
 #include <vector>
 
 #include "kernels/kernel.hpp"
@@ -18,7 +18,8 @@ std::vector<double> deptulski_table_2_1_pairs();
 // Relative error of the divergence sum_b V_b (v_b - v_a) . K_a grad W~_ab (Deptulski eqs. 2.42a,
 // 2.63b) of the quartic field v_d = q(x_d), q = -4x^4 + 3x^3 + 15x^2 - x + 15 (eq. 2.92c, 2.95), on
 // `per_axis` cell-centred points per axis of the unit bar/square/cube at 50 m, support 0.56 m
-// (digest §4.2), each point moved by up to `jitter` spacings (uniform, fixed seed).
+// (his "h = 2.8 dx" of §2.5 read as the support radius), each point moved by up to `jitter`
+// spacings (uniform, fixed seed).
 struct DivergenceErrors {
   double max = 0;      // over all points
   double point4 = 0;   // 1D, the fourth point (x = 50.7 m with 5 points)

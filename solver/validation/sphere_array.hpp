@@ -8,7 +8,8 @@
 
 namespace psph {
 
-// K_a (m^2) for the three solid fractions of the paper (digest §3.2, from Sangani & Acrivos 1982).
+// K_a (m^2) for the three solid fractions of the paper (Pazdniakou 2018 Table 2, eqs. 79-81,
+// after Sangani & Acrivos 1982).
 double sphere_array_reference(double solid_fraction);
 
 // The case with the sphere radius for `solid_fraction`, spacing = support / support_per_spacing.

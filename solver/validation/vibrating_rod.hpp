@@ -1,6 +1,6 @@
 #pragma once
 // Longitudinal vibration of a 1D elastic rod (cases/vibrating_rod_1d.toml; Deptulski 2021 Ch. 3,
-// digest §4.7 and §4.11): the rod starts undeformed with the velocity profile of mode k,
+// its §3 and §4.4, Tables 1-3): the rod starts undeformed with the velocity profile of mode k,
 //   clamped-clamped v = C2 w sin(k pi x / L),  clamped-free v = C2 w sin((2k - 1) pi x / (2L))
 // (eq. C3-41, C2 = L/2000), and vibrates at w = beta c / L. The frequency parameter beta^2 is read
 // from the zero crossings of the modal coordinate over three periods.

@@ -1,0 +1,64 @@
+#pragma once
+// The open-boundary stage (boundary/open_boundary.hpp): pressure inlet and outlet buffers across
+// a periodic axis. Fluid that crosses into the inlet becomes the injected fluid; each step the
+// buffers take the velocity of the outgoing characteristic, then their imposed state.
+#include "boundary/open_boundary.hpp"
+#include "boundary/open_boundary_zone.hpp"
+#include "stage/step_context.hpp"
+
+namespace psph {
+
+template <int D, class B>
+class OpenBoundaryStage {
+ public:
+  bool active() const { return active_; }
+
+  void setup(StepContext<D, B>& cx, const SceneOpenBoundary& ob, double support_radius) {
+    active_ = ob.axis >= 0;
+    if (!active_) return;
+    OpenBoundaryZone<D>& z = cx.mats.open;
+    const Real lo = Real(ob.lower), hi = Real(ob.upper), b = Real(ob.thickness);
+    z.axis = ob.axis;
+    z.inlet_lower = ob.inlet_at_lower ? lo : hi - b, z.inlet_upper = ob.inlet_at_lower ? lo + b : hi;
+    z.outlet_lower = ob.inlet_at_lower ? hi - b : lo, z.outlet_upper = ob.inlet_at_lower ? hi : lo + b;
+    z.inlet_pressure = Real(ob.inlet_pressure), z.outlet_pressure = Real(ob.outlet_pressure);
+    z.inlet_material = ob.inlet_material;
+    z.face_band = Real(support_radius);
+    z.domain_lower = lo;
+  }
+
+  void convert_inlet(StepContext<D, B>& cx) const {
+    if (active_) B::for_each(cx.n(), ConvertInletFluid<D>{cx.view(), cx.mats});
+  }
+
+  // Each buffer's velocity gets the correction of the outgoing characteristic with its pressure p_b
+  // imposed (linear acoustics: u_n - p/(rho c) is carried from the interior into the buffer, u_n the
+  // velocity along the buffer's inward normal n): du_n = (p_b - p)/(rho c), with p and rho c the
+  // means over the interior band next to the buffer. The pressure difference lets mass in or out
+  // until the fluid next to a buffer has the buffer's pressure.
+  // Runs after the step is chosen: the buffers' new velocities differ from the last ones by du << c.
+  void buffer_velocity(StepContext<D, B>& cx, double dt) const {
+    if (!active_) return;
+    const ParticleView<D> v = cx.view();
+    Real u_band[2] = {0, 0}, du[2] = {0, 0};
+    const BandSums sums = cx.template sum_of<BandSums>(BandSum<D>{v, cx.mats});
+    for (int b = 0; b < 2; ++b) {
+      const Real* q = sums.q[b];
+      if (q[0] == 0) continue;
+      const BufferZone z = b == 0 ? BufferZone::Inlet : BufferZone::Outlet;
+      u_band[b] = q[1] / q[0];
+      du[b] = cx.mats.open.inward(z) * (cx.mats.open.pressure(z) - q[2] / q[0]) / (q[3] / q[0]);
+    }
+    B::for_each(cx.n(), SetBufferVelocity<D>{v, cx.mats, cx.cells(), cx.list(), cx.kern, {u_band[0], u_band[1]},
+                                             {du[0], du[1]}, Real(kBufferShift / dt)});
+  }
+
+  void buffer_state(StepContext<D, B>& cx) const {
+    if (active_) B::for_each(cx.n(), SetBufferState<D>{cx.view(), cx.mats});
+  }
+
+ private:
+  bool active_ = false;
+};
+
+}  // namespace psph

@@ -1,0 +1,123 @@
+#pragma once
+// The fluid stage: density (summation, or the continuity equation and the equation of state), the
+// pressure and no-slip velocity that walls present to the fluid, the fluid's pair forces, the
+// implicit viscous step, and the ramped body-force regions.
+#include <string>
+#include <vector>
+
+#include "boundary/wall_pressure.hpp"
+#include "boundary/wall_velocity.hpp"
+#include "core/instability.hpp"
+#include "fluid/body_force_region.hpp"
+#include "fluid/continuity.hpp"
+#include "fluid/density.hpp"
+#include "fluid/fluid_options.hpp"
+#include "fluid/momentum.hpp"
+#include "integrate/bicgstab.hpp"
+#include "interface/interface_options.hpp"
+#include "stage/ramp.hpp"
+#include "stage/step_context.hpp"
+
+namespace psph {
+
+template <int D, class B>
+class FluidStage {
+ public:
+  void setup(StepContext<D, B>& cx, const FluidOptions& o, const InterfaceOptions& io,
+             const std::vector<SceneForceRegion>& regions) {
+    o_ = o;
+    regions_ = regions;
+    cx.mats.region_count = static_cast<int>(regions_.size());
+    for (int r = 0; r < cx.mats.region_count; ++r) {
+      cx.mats.region[r].material = regions_[r].material;
+      for (int d = 0; d < D; ++d)
+        cx.mats.region[r].lower[d] = Real(regions_[r].lower[d]), cx.mats.region[r].upper[d] = Real(regions_[r].upper[d]);
+    }
+    fo_.xsph = Real(o.xsph);
+    fo_.laplacian = o.laplacian_correction;
+    fo_.artificial_viscosity = Real(o.artificial_viscosity);
+    fo_.smoothing_length = Real(cx.smoothing_length);
+    fo_.number_density = o.density == DensityMethod::NumberSummation;
+    fo_.viscosity = !o.implicit_viscosity;
+    fo_.surface_tension = Real(io.surface_tension);
+    fo_.contact_line_force = io.contact_line_force && cx.walls;
+  }
+  const FluidForceOptions& force_options() const { return fo_; }
+  int linear_iterations() const { return linear_iterations_; }
+
+  // Body-force regions at time t, each scaled by its ramp factor.
+  void ramp_regions(StepContext<D, B>& cx, double t) const {
+    for (int r = 0; r < cx.mats.region_count; ++r) {
+      const double f = ramp_factor(t, regions_[r].ramp_time);
+      for (int d = 0; d < D; ++d) cx.mats.region[r].acceleration[d] = Real(f * regions_[r].acceleration[d]);
+    }
+  }
+
+  // The walls' reference density: their initial summed density (lists of every particle built).
+  void wall_rest_density(StepContext<D, B>& cx) const {
+    density(cx, true);
+    B::for_each(cx.n(), SetWallRestDensity<D>{cx.view(), cx.mats});
+  }
+  // Density by summation, or the pressure of the integrated density.
+  void density(StepContext<D, B>& cx, bool all_particles = false) const {
+    if (cx.continuity) return B::for_each(cx.n(), EquationOfStatePass<D>{cx.view(), cx.mats});
+    const bool normalised = o_.density == DensityMethod::NormalisedSummation;
+    const bool number = o_.density == DensityMethod::NumberSummation;
+    if (normalised) B::for_each(cx.n(), NumberDensityPass<D>{cx.list(), cx.kern, cx.view(), all_particles});
+    B::for_each(cx.n(), DensitySummationPass<D>{cx.list(), cx.kern, cx.view(), cx.mats, normalised, number,
+                                                all_particles, cx.solids()});
+  }
+  // d rho/dt with the velocity that drifts the particles (fluid/continuity.hpp).
+  void density_rate(StepContext<D, B>& cx) const {
+    if (!cx.continuity) return;
+    B::for_each(cx.n(), ContinuityPass<D>{cx.list(), cx.kern, cx.view(), cx.mats, Real(o_.density_diffusion),
+                                          Real(cx.smoothing_length), o_.wall_pressure == WallPressure::Summation});
+  }
+
+  // Walls and solids present a pressure and a no-slip velocity (boundary/, solid/fluid_coupling.hpp).
+  void present_walls(StepContext<D, B>& cx) const {
+    if (cx.walls && o_.wall_pressure == WallPressure::Extrapolated)
+      B::for_each(cx.n(), WallPressurePass<D>{cx.list(), cx.kern, cx.view(), cx.mats});
+    if (cx.walls || cx.solids())
+      B::for_each(cx.n(), WallVelocityPass<D>{cx.list(), cx.kern, cx.view(), cx.mats, o_.wall_noslip});
+  }
+  void forces(StepContext<D, B>& cx) const {
+    B::for_each(cx.n(), FluidForcePass<D>{cx.list(), cx.kern, cx.view(), cx.mats, fo_});
+  }
+
+  // v <- (I - dt L)^-1 v on the fluid (fluid/viscosity.hpp), L at the current positions with the
+  // walls' no-slip velocities of the last force pass; those move to the right-hand side.
+  void viscous_step(StepContext<D, B>& cx, double dt, const std::string& when) {
+    if (!o_.implicit_viscosity) return;
+    const int n = cx.n();
+    const ParticleView<D> v = cx.view();
+    for (auto* a : {&visc_b_, &visc_x_}) a->resize(n);
+    const bool normalise = o_.laplacian_correction != LaplacianCorrection::None;
+    auto op = [&](const Vec<D>* in, Vec<D>* out, bool walls) {
+      B::for_each(n, ImplicitViscosityOperator<D>{cx.list(), cx.kern, v, cx.mats, normalise, Real(dt), in, out, walls});
+    };
+    visc_x_.zero();
+    op(visc_x_.data(), visc_b_.data(), true);  // A(0): the walls' part
+    B::for_each(n, FluidDifference<D>{visc_b_.data(), v.v, visc_b_.data(), v, cx.mats});
+    B::for_each(n, FluidDifference<D>{visc_x_.data(), v.v, visc_x_.data(), v, cx.mats});  // guess: v
+    const KrylovResult r = krylov_.solve(
+        n, [&](const Vec<D>* in, Vec<D>* out) { op(in, out, false); }, visc_b_.data(), visc_x_.data(),
+        o_.implicit_tolerance, 1000);
+    linear_iterations_ = r.iterations;
+    if (!r.converged)
+      throw InstabilityError("the implicit viscous solve did not converge (relative residual " +
+                             std::to_string(r.relative_residual) + " after " + std::to_string(r.iterations) +
+                             " BiCGSTAB iterations)" + when);
+    B::for_each(n, SetFluidVelocity<D>{visc_x_.data(), v, cx.mats});
+  }
+
+ private:
+  FluidOptions o_;
+  FluidForceOptions fo_;
+  std::vector<SceneForceRegion> regions_;  // full body forces of the regions (cx.mats holds them ramped)
+  BiCGStab<D, B> krylov_;
+  DeviceArray<Vec<D>, B> visc_b_, visc_x_;  // implicit viscous step: right-hand side, solution
+  int linear_iterations_ = 0;
+};
+
+}  // namespace psph

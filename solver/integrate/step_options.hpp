@@ -1,0 +1,16 @@
+#pragma once
+// How a step advances (the engine's options: integrator, time step, health checks).
+
+namespace psph {
+
+enum class Integrator { Leapfrog, VelocityVerlet };
+
+struct StepOptions {
+  Integrator integrator = Integrator::VelocityVerlet;
+  double dt_factor = 1;        // scales every time-step limit
+  double fixed_dt = 0;         // > 0: constant step instead of the adaptive one
+  double min_dt_ratio = 1e-4;  // a step below this fraction of the first step is a collapse
+  double max_density_deviation = 0;  // > 0: |rho/rho0 - 1| of a fluid particle that stops a run
+};
+
+}  // namespace psph

@@ -1,0 +1,55 @@
+#pragma once
+// The interface stage (two fluids with surface tension): the smoothed colour, the interface normal
+// with the walls' wetting, and the curvature that the fluid's force pass turns into the capillary
+// force (interface/surface_tension.hpp, interface/wall_wetting.hpp).
+#include "interface/interface_options.hpp"
+#include "interface/surface_tension.hpp"
+#include "interface/wall_wetting.hpp"
+#include "stage/step_context.hpp"
+
+namespace psph {
+
+template <int D, class B>
+class InterfaceStage {
+ public:
+  bool active() const { return o_.surface_tension > 0; }
+
+  void setup(StepContext<D, B>& cx, const InterfaceOptions& o) {
+    o_ = o;
+    if (!active()) return;
+    ParticleState<D, B>& s = cx.s;
+    const int n = cx.n();
+    s.colour.resize(n), s.colour_gradient.resize(n), s.curvature.resize(n);
+    s.colour.zero(), s.colour_gradient.zero(), s.curvature.zero();
+    s.add_field(s.colour, 1, "colour", "-", "smoothed colour function, +1 liquid, -1 gas (Pazdniakou eq. 58)");
+    s.add_field(s.colour_gradient, D, "colour_gradient", "1/m", "interface normal n = grad c (eq. 59a)");
+    s.add_field(s.curvature, 1, "curvature", "1/m", "interface curvature -div n^ (eqs. 7, 60)");
+  }
+
+  // Colour, normal (twice more near walls with geometric wetting), curvature.
+  void curvature(StepContext<D, B>& cx) const {
+    if (!active()) return;
+    const int n = cx.n();
+    const ParticleView<D> v = cx.view();
+    const auto nb = cx.list();
+    if (o_.geometric_wetting && cx.walls) {
+      B::for_each(n, ColourPass<D>{nb, cx.kern, v, cx.mats, WallColour::FluidOnly});
+      B::for_each(n, NormalPass<D>{nb, cx.kern, v, cx.mats, WallColour::FluidOnly});
+      for (int k = 0; k < 2; ++k) {
+        B::for_each(n, WallWettingPass<D>{nb, cx.kern, v, cx.mats});
+        B::for_each(n, ColourPass<D>{nb, cx.kern, v, cx.mats, WallColour::NearWallsAgain});
+        B::for_each(n, NormalPass<D>{nb, cx.kern, v, cx.mats, WallColour::NearWallsAgain});
+      }
+    } else {
+      B::for_each(n, ColourPass<D>{nb, cx.kern, v, cx.mats, WallColour::Constant});
+      B::for_each(n, NormalPass<D>{nb, cx.kern, v, cx.mats, WallColour::Constant});
+    }
+    B::for_each(n, CurvaturePass<D>{nb, cx.kern, v, cx.mats, Real(o_.normal_threshold / cx.smoothing_length),
+                                    o_.geometric_wetting});
+  }
+
+ private:
+  InterfaceOptions o_;
+};
+
+}  // namespace psph

@@ -1,0 +1,110 @@
+#pragma once
+// The neighbour stage: cell keys, the stable sort by cell that reorders every registered field,
+// the Verlet lists (neighbours/neighbour_list.hpp) and when they expire. The physics stages read
+// the lists through the step context (stage/step_context.hpp).
+#include <algorithm>
+#include <stdexcept>
+#include <vector>
+
+#include "backend/device_array.hpp"
+#include "neighbours/list_passes.hpp"
+#include "neighbours/cell_grid.hpp"
+#include "neighbours/fluid_proximity.hpp"
+#include "neighbours/neighbour_list.hpp"
+#include "state/particles.hpp"
+
+namespace psph {
+
+template <int D, class B>
+class NeighbourStage {
+ public:
+  // The list radius R (1 + skin), reduced where a periodic axis needs it to keep 3 cells; the grid
+  // of cells of at least R.
+  CellGrid<D> setup(const double lower[], const double upper[], const bool periodic[], double support, double skin) {
+    support_ = support;
+    radius_ = support * (1 + skin);
+    Real lo[D], hi[D];
+    bool per[D];
+    for (int k = 0; k < D; ++k) {
+      lo[k] = Real(lower[k]), hi[k] = Real(upper[k]), per[k] = periodic[k];
+      if (per[k]) radius_ = std::min(radius_, (upper[k] - lower[k]) / 3);
+    }
+    radius_ = std::max(radius_, support);
+    CellGrid<D> grid{};
+    if (!CellGrid<D>::make(lo, hi, per, Real(radius_), grid))
+      throw std::invalid_argument("a periodic axis is shorter than 3 support radii");
+    bucket_start_.resize(2 * grid.total), bucket_end_.resize(2 * grid.total), cell_near_.resize(grid.total);
+    return grid;
+  }
+
+  void resize(int n) { keys_.resize(n), perm_.resize(n), count_.resize(n), fluid_count_.resize(n); }
+
+  // The cell ranges of the last sort, for searches beyond the lists (open-boundary buffers).
+  NeighbourView<D> cells(const CellGrid<D>& grid, const Vec<D>* x) const {
+    return NeighbourView<D>{grid, x, bucket_start_.data(), bucket_end_.data(), Real(radius_ * radius_)};
+  }
+  // The lists, visited with positions x (the current ones, or a solid's reference positions).
+  NeighbourList<D> list(const CellGrid<D>& grid, const Vec<D>* x, Real support) const {
+    return NeighbourList<D>{grid, x, index_.data(), count_.data(), fluid_count_.data(), stride_i(), stride_k(),
+                            support * support};
+  }
+  int capacity() const { return capacity_; }
+
+  // Cell keys, sort by cell (fluid first in each cell), reorder every registered field, ranges, lists.
+  // `every_particle`: full lists for every particle (the initial density, which must see every
+  // wall's whole neighbourhood to set its rest density); otherwise walls far from the fluid get none.
+  template <class Cx>
+  void build(Cx& cx, bool every_particle) {
+    const int n = cx.n();
+    B::for_each(n, CellKeyPass<D>{cx.grid, cx.s.x.data(), cx.s.material.data(), cx.mats, keys_.data()});
+    B::sort_by_cell(keys_.data(), n, 2 * cx.grid.total, perm_.data(), bucket_start_.data(), bucket_end_.data());
+    cx.s.permute(perm_.data());
+    if (cx.follow_ids) B::for_each(n, IndexOfIdPass<D>{cx.s.view()});
+    if (every_particle) {
+      cx.s.near_fluid.upload(std::vector<std::uint8_t>(n, 1));
+    } else if (cx.walls && cx.fluid) {  // without fluids every wall lists all its neighbours
+      B::for_each(cx.grid.total, CellNearFluid<D>{cells(cx.grid, cx.s.x.data()), cell_near_.data()});
+      B::for_each(n, NearFluid<D>{cx.grid, cx.s.x.data(), cell_near_.data(), cx.s.near_fluid.data()});
+    }
+    build_lists(cx);
+    x_build_.resize(n);
+    B::copy(x_build_.data(), cx.s.x.data(), sizeof(Vec<D>) * n);
+  }
+
+  // The lists hold every pair within R as long as no particle moved by half the skin.
+  template <class Cx>
+  bool expired(const Cx& cx) const {
+    const double half_skin = 0.5 * (radius_ - support_);
+    if (half_skin <= 0) return true;
+    return cx.template max_of<Real>(DisplacementSinceBuild<D>{cx.grid, cx.s.x.data(), x_build_.data()}) >= half_skin;
+  }
+
+ private:
+  ListOffset stride_i() const { return B::list_rows_contiguous ? capacity_ : 1; }
+  ListOffset stride_k() const { return B::list_rows_contiguous ? 1 : ListOffset(count_.size()); }
+
+  // Lists from the cell list; grows the capacity when a particle has more neighbours.
+  template <class Cx>
+  void build_lists(Cx& cx) {
+    const int n = cx.n();
+    for (;;) {
+      if (index_.size() < std::size_t(capacity_) * n) index_.resize(std::size_t(capacity_) * n);
+      B::for_each(n, BuildNeighbourList<D>{cells(cx.grid, cx.s.x.data()), cx.s.material.data(), cx.mats,
+                                           cx.s.near_fluid.data(), cx.elastic && cx.walls ? cx.s.mirror.data() : nullptr,
+                                           !cx.continuity, !cx.fluid, index_.data(), count_.data(),
+                                           fluid_count_.data(), capacity_, stride_i(), stride_k()});
+      const int most = n ? cx.template max_of<int>(ListCount<D>{count_.data()}) : 0;
+      if (most <= capacity_) return;
+      capacity_ = most + most / 4 + 4;
+    }
+  }
+
+  double support_ = 0, radius_ = 0;
+  int capacity_ = 32;
+  DeviceArray<int, B> keys_, perm_, bucket_start_, bucket_end_;
+  DeviceArray<std::uint8_t, B> cell_near_;
+  DeviceArray<int, B> index_, count_, fluid_count_;
+  DeviceArray<Vec<D>, B> x_build_;  // positions at the last list build
+};
+
+}  // namespace psph

@@ -1,0 +1,39 @@
+#pragma once
+// The fluid-solid coupling stage (solid/fluid_coupling.hpp): elastic and rigid solids present a
+// pressure to the fluid before its force pass, and take the fluid's reaction after their own.
+#include "solid/fluid_coupling.hpp"
+#include "solid/solid_options.hpp"
+#include "stage/step_context.hpp"
+
+namespace psph {
+
+template <int D, class B>
+class CouplingStage {
+ public:
+  bool active() const { return active_; }
+
+  void setup(StepContext<D, B>& cx, SolidCoupling mode) {
+    mode_ = mode;
+    active_ = cx.fluid && cx.solids();
+    if (!active_) return;
+    // Written and read within one force evaluation: not registered.
+    ParticleState<D, B>& s = cx.s;
+    s.visc_scale.resize(cx.n()), s.fluid_contact.resize(cx.n()), s.p_ambient.resize(cx.n());
+    s.visc_scale.zero(), s.fluid_contact.zero(), s.p_ambient.zero();
+  }
+
+  void present_solids(StepContext<D, B>& cx) const {
+    if (active_) B::for_each(cx.n(), SolidInterfacePressurePass<D>{cx.list(), cx.kern, cx.view(), cx.mats, mode_});
+  }
+  // `fo`: the fluid's force options (the reaction is the fluid's pair force, computed again).
+  void fluid_on_solids(StepContext<D, B>& cx, const FluidForceOptions& fo) const {
+    if (active_)
+      B::for_each(cx.n(), FluidOnSolidPass<D>{cx.list(), cx.kern, cx.view(), cx.mats, fo, mode_ != SolidCoupling::Traction});
+  }
+
+ private:
+  SolidCoupling mode_ = SolidCoupling::Traction;
+  bool active_ = false;
+};
+
+}  // namespace psph

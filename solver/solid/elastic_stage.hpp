@@ -1,0 +1,156 @@
+#pragma once
+// The elastic-solid stage: displacements (mirrored on clamps), strain and stress, the elastic
+// force in the stress form (solid/stress_form.hpp) or the displacement form
+// (solid/elastic_force.hpp), small strain or Saint Venant-Kirchhoff on fixed lists of t = 0
+// (neighbours/reference_list.hpp), the solid's artificial viscosity and damping.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "neighbours/reference_list.hpp"
+#include "solid/artificial_viscosity.hpp"
+#include "solid/clamp.hpp"
+#include "solid/damping.hpp"
+#include "solid/elastic_force.hpp"
+#include "solid/fluid_coupling.hpp"
+#include "solid/solid_options.hpp"
+#include "solid/stress_form.hpp"
+#include "stage/monitor_value.hpp"
+#include "stage/step_context.hpp"
+#include "state/checkpoint.hpp"
+
+namespace psph {
+
+template <int D, class B>
+class ElasticStage {
+ public:
+  bool active() const { return active_; }
+
+  // `mirror`: each particle's clamp partner (solid/clamp_partners.hpp).
+  void setup(StepContext<D, B>& cx, const SolidOptions& o, const std::vector<std::int32_t>& mirror) {
+    o_ = o;
+    active_ = cx.elastic;
+    if (!active_) return;
+    ParticleState<D, B>& s = cx.s;
+    const int n = cx.n();
+    s.x0.resize(n), s.u.resize(n), s.strain.resize(n), s.stress.resize(n);
+    s.shepard.resize(n), s.shepard_grad.resize(n), s.kcorr.resize(n);
+    s.index_of_id.resize(n);
+    s.u.zero(), s.strain.zero(), s.stress.zero();
+    s.add_field(s.x0, D, "reference_position", "m", "initial position (small-strain reference configuration)");
+    s.add_field(s.u, D, "displacement", "m", "displacement x - x0 of elastic solids");
+    s.add_field(s.strain, D * D, "strain", "-", "small strain sym(grad u) (large strain: Green-Lagrange), row-major");
+    s.add_field(s.stress, D * D, "stress", "Pa", "Cauchy stress (tension positive), row-major");
+    s.mirror.upload(mirror);
+    s.add_field(s.mirror, 1, "clamp_mirror", "-", "id of a clamp wall's mirror partner and back, -1 if none");
+    B::copy(s.x0.data(), s.x.data(), sizeof(Vec<D>) * n);
+    if (large_strain()) {
+      // The Piola stress of the strain pass is recomputed before every use: not registered. The
+      // fluid reads a solid's volume det F before the next strain pass, so F must follow
+      // reorderings and checkpoints.
+      s.piola.resize(n);
+      s.piola.zero();
+      s.defgrad.upload(std::vector<Mat<D>>(n, Mat<D>::identity()));  // undeformed until the first strain pass
+      s.add_field(s.defgrad, D * D, "deformation_gradient", "-", "F = I + grad u (large strain), row-major");
+    }
+    cx.follow_ids |= cx.walls || large_strain();  // clamps and reference lists find particles by id
+  }
+
+  // After a list build: at t = 0 (current = reference positions) the large-strain solid records
+  // its lists of t = 0.
+  void lists_built(StepContext<D, B>& cx) {
+    if (!active_ || !large_strain() || reference_count_.size() != 0) return;
+    const int n = cx.n();
+    reference_capacity_ = cx.neighbours.capacity();
+    reference_ids_.resize(std::size_t(reference_capacity_) * n), reference_count_.resize(n);
+    B::for_each(n, RecordReferenceNeighbours<D>{cx.list(), cx.view(), cx.mats, reference_ids_.data(),
+                                                reference_count_.data(), reference_capacity_});
+  }
+
+  // Displacements and, where the step needs them, strain and stress (the fluid reads the solid's
+  // volume change).
+  void strain(StepContext<D, B>& cx) const {
+    if (!active_) return;
+    B::for_each(cx.n(), DisplacementPass<D>{cx.view(), cx.grid});
+    if (cx.walls) B::for_each(cx.n(), ClampDisplacementPass<D>{cx.view(), cx.mats});
+    if (stress_form() || cx.fluid)
+      with_solid_neighbours(cx, [&](auto nb) {
+        B::for_each(cx.n(), StrainStressPass<D, decltype(nb)>{nb, cx.kern, cx.view(), cx.mats});
+      });
+  }
+
+  void forces(StepContext<D, B>& cx) const {
+    if (!active_) return;
+    const Real zeta = Real(o_.solid_damping_rate);
+    const bool traction = cx.fluid && o_.solid_coupling == SolidCoupling::Traction;
+    if (traction) B::for_each(cx.n(), AmbientPressurePass<D>{cx.list(), cx.kern, cx.view(), cx.mats});
+    with_solid_neighbours(cx, [&](auto nb) {
+      using NB = decltype(nb);
+      if (stress_form()) B::for_each(cx.n(), StressForcePass<D, NB>{nb, cx.kern, cx.view(), cx.mats, zeta, traction});
+      else B::for_each(cx.n(), ElasticForcePass<D>{cx.reference_list(), cx.kern, cx.view(), cx.mats, zeta});
+      if (o_.solid_artificial_viscosity > 0 || o_.solid_artificial_viscosity_beta > 0 || o_.solid_xsph > 0)
+        B::for_each(cx.n(), SolidViscosityPass<D, NB>{nb, cx.grid, cx.kern, cx.view(), cx.mats,
+                                                      Real(o_.solid_artificial_viscosity),
+                                                      Real(o_.solid_artificial_viscosity_beta), Real(o_.solid_xsph),
+                                                      Real(cx.smoothing_length)});
+    });
+  }
+
+  // The damping's power at the end of the step, times dt.
+  void end_of_step(StepContext<D, B>& cx, double dt) {
+    if (active_ && o_.solid_damping_rate > 0)
+      dissipated_ += dt * cx.template sum_of<Real>(DampingPowerOf<D>{cx.view(), cx.mats, Real(o_.solid_damping_rate)});
+  }
+
+  double elastic_energy(StepContext<D, B>& cx) const {
+    if (!active_) return 0;
+    const ParticleView<D> v = cx.view();
+    return stress_form() ? cx.template sum_of<Real>(StrainEnergyOf<D>{v, cx.mats})
+                         : cx.template sum_of<Real>(ElasticEnergyOf<D>{{cx.reference_list(), cx.kern, v, cx.mats}});
+  }
+  double dissipated_energy() const { return dissipated_; }
+
+  void monitors(StepContext<D, B>& cx, std::vector<MonitorValue>& out) const {
+    if (!active_) return;
+    out.push_back({"elastic_energy", elastic_energy(cx)});
+    if (o_.solid_damping_rate > 0) out.push_back({"dissipated_energy", dissipated_});
+  }
+
+  // The displacement form needs no strain or stress in its step: computed when asked for, once
+  // per state.
+  void prepare_field(StepContext<D, B>& cx, const std::string& name, long step) {
+    if (!active_ || stress_form() || (name != "strain" && name != "stress") || strain_step_ == step) return;
+    B::for_each(cx.n(), StrainStressPass<D>{cx.reference_list(), cx.kern, cx.view(), cx.mats});
+    strain_step_ = step;
+  }
+
+  void save(Checkpoint& c) const { c.dissipated_energy = dissipated_; }
+  void load(const Checkpoint& c) {
+    dissipated_ = c.dissipated_energy;
+    strain_step_ = -1;
+  }
+
+ private:
+  bool stress_form() const { return o_.solid_formulation == SolidFormulation::Stress; }
+  bool large_strain() const { return o_.solid_model == SolidModel::SaintVenantKirchhoff; }
+  // Calls f with the solid's neighbours in the reference configuration: the fixed lists of t = 0
+  // in large strain; in small strain the current lists with the reference positions (pairs closer
+  // than the support there; the skin keeps them listed while the relative displacement of
+  // neighbours stays below skin x support, i.e. strains and rotations below ~10 %).
+  template <class F>
+  void with_solid_neighbours(StepContext<D, B>& cx, F&& f) const {
+    if (large_strain())
+      f(ReferenceNeighbours<D>{cx.grid, cx.s.x0.data(), cx.s.id.data(), cx.s.index_of_id.data(), reference_ids_.data(),
+                               reference_count_.data(), reference_capacity_, cx.kern.support * cx.kern.support});
+    else f(cx.reference_list());
+  }
+
+  SolidOptions o_;
+  bool active_ = false;
+  DeviceArray<std::int32_t, B> reference_ids_, reference_count_;  // large strain: lists of t = 0 by id
+  int reference_capacity_ = 0;
+  double dissipated_ = 0;  // J, by the solid's damping
+  long strain_step_ = -1;  // the step whose strain and stress the fields hold
+};
+
+}  // namespace psph
