@@ -43,6 +43,12 @@ expect_rejected(impossible_dt "${t}" "solver.dt" "impossible")
 string(REPLACE "material = \"water\"" "material = \"empty\"" t "${base}")
 expect_rejected(no_particles "${t}" "geometry" "no fluid, elastic or rigid particles")
 
+# The validation list: a name and a description per line (the CTest validation tests come from it).
+execute_process(COMMAND ${PORESPH} validate --list RESULT_VARIABLE rc OUTPUT_VARIABLE listing)
+if(NOT rc EQUAL 0 OR NOT listing MATCHES "(^|\n)kernels\t[^\n]+\n" OR NOT listing MATCHES "\nsettling_cylinder_2d\t")
+  message(FATAL_ERROR "poresph validate --list gave exit ${rc}:\n${listing}")
+endif()
+
 execute_process(COMMAND ${PORESPH} run ${WORK}/does_not_exist.toml RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 2 OR NOT err MATCHES "cannot open")
   message(FATAL_ERROR "a missing case file gave exit ${rc}: ${err}")

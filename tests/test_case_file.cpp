@@ -105,3 +105,28 @@ TEST(CaseFile, LatticeAndMasses) {
   for (int m : c.scene.material) water += c.scene.materials[m].name == "water";
   EXPECT_EQ(water, 20 * 8);
 }
+
+// A key that would have no effect in the case is refused with the reason, not silently ignored.
+TEST(CaseFile, KeysWithoutEffectAreRefused) {
+  const std::string water = base_case();  // one fluid between walls, no surface tension
+  auto with = [&](const std::string& table_and_key) { return replaced(water, "[time]", table_and_key + "\n\n[time]"); };
+  expect_error(with("[solver]\ndensity_diffusion = 0.1"), {"solver.density_diffusion", "density = \"continuity\""});
+  EXPECT_EQ(error_of(with("[solver]\ndensity = \"continuity\"\ndensity_diffusion = 0.1")), "");
+  expect_error(with("[solver]\nimplicit_tolerance = 1e-8"), {"solver.implicit_tolerance", "implicit_viscosity = true"});
+  EXPECT_EQ(error_of(with("[solver]\nimplicit_viscosity = true\nimplicit_tolerance = 1e-8")), "");
+  expect_error(with("[interface]\nnormal_threshold = 0.02"), {"interface.normal_threshold", "surface_tension > 0"});
+  expect_error(with("[interface]\nwetting = \"wall_colour\""), {"interface.wetting", "surface_tension > 0"});
+  expect_error(with("[monitors]\nflow_axis = \"x\""), {"monitors.flow_axis", "a liquid and a gas"});
+  expect_error(replaced(water, "sound_speed = 0.01", "sound_speed = 0.01\ntait_gamma = 7.0"),
+               {"materials.water.tait_gamma", "equation_of_state = \"tait\""});
+  // Without a fluid, the fluid's methods have nothing to act on.
+  const std::string rod = embedded_case_text("vibrating_rod_1d");
+  EXPECT_EQ(error_of(rod), "");
+  expect_error(replaced(rod, "[time]", "[solver]\nxsph = 0.5\n\n[time]"),
+               {"solver.xsph", "a material with kind = \"fluid\""});
+  // With surface tension but no walls, the walls' wetting has nothing to act on.
+  const std::string bubble = embedded_case_text("laplace_bubble_2d");
+  EXPECT_EQ(error_of(bubble), "");
+  expect_error(replaced(bubble, "[interface]", "[interface]\ncontact_line_force = false"),
+               {"interface.contact_line_force", "kind = \"wall\""});
+}

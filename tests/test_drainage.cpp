@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "case_text.hpp"
+#include "core/fluid_table.hpp"
 #include "engine/engine.hpp"
 #include "monitors/two_phase.hpp"
 #include "scene/case_file.hpp"
@@ -64,7 +65,7 @@ TEST(GrainPack, UnreachableFractionIsACaseError) {
 }
 
 TEST(ForceRegion, OnlyItsMaterialInsideItsBox) {
-  MaterialTable<2> mats;
+  FluidTable<2> mats;
   mats.count = 2;
   mats.body_force[0] = Vec<2>{{0, -1}};
   mats.region_count = 1;

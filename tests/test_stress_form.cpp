@@ -9,7 +9,7 @@
 #include "engine/engine.hpp"
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
-#include "solid/clamp_partners.hpp"
+#include "engine/clamp_partners.hpp"
 
 using namespace psph;
 using psph::test::replaced;

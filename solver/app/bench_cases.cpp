@@ -32,8 +32,8 @@ std::vector<BenchSpec> bench_specs(const std::string& backend, bool quick) {
     b.steps = quick ? quick_steps : steps;
     s.push_back(b);
   };
-  // SPHinXsys' test_3d_dambreak set-up (peer-codes digest §7.1b): fluid particle-steps per second
-  // compare directly with its 0.40-0.48 M on 2 cores.
+  // SPHinXsys' set-up tests/3d_examples/test_3d_dambreak (commit 9f33297): fluid particle-steps
+  // per second compare directly with the 0.40-0.48 M it reaches on 2 cores (BENCHMARKS.md).
   embedded("dam_break_3d", 50, 400);
   // Two fluids with surface tension and walls: the colour, normal and curvature passes on top.
   embedded("drainage_2d", 50, 1000);

@@ -65,4 +65,9 @@ int cmd_validate(const std::vector<std::string>& names, bool full, bool json, co
   return failed ? 1 : 0;
 }
 
+int cmd_validate_list() {
+  for (const auto& c : validation_cases()) std::cout << c.name << '\t' << c.description << "\n";
+  return 0;
+}
+
 }  // namespace psph

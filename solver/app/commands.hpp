@@ -27,6 +27,9 @@ int cmd_figures(const std::string& run_dir, const std::vector<std::string>& pipe
 // interrupted.
 int cmd_serve(const std::string& run_dir, int port, const std::string& bind);
 int cmd_validate(const std::vector<std::string>& names, bool full, bool json, const std::string& backend);
+// One line per validation case: its name, a tab, its description (the CTest validation tests are
+// generated from it: tests/list_validations.cmake).
+int cmd_validate_list();
 // `names`: benchmarks to run (default all); an unknown name is exit 2.
 int cmd_bench(const std::vector<std::string>& names, bool json, const std::string& backend, bool quick,
               bool accuracy, bool stability);

@@ -1,7 +1,9 @@
 // poresph command line: run, check, validate, bench, demo, figures, serve.
 #include <CLI/CLI.hpp>
+#include <iostream>
 #include <vector>
 
+#include "app/bench_cases.hpp"
 #include "app/commands.hpp"
 
 int main(int argc, char** argv) {
@@ -46,10 +48,15 @@ int main(int argc, char** argv) {
   validate->add_flag("--full", full, "published sizes instead of the reduced CI sizes");
   validate->add_flag("--json", json, "print a JSON array of records");
   validate->add_option("--backend", vbackend, "cpu or cuda")->check(CLI::IsMember(backends));
+  bool validate_list = false;
+  validate->add_flag("--list", validate_list, "print each validation case's name and description, run nothing");
 
   auto* bench = app.add_subcommand("bench", "measure the speed of the solver");
   std::vector<std::string> bench_names;
-  bench->add_option("names", bench_names, "benchmarks to run, e.g. dam_break_3d (default: all)");
+  bench->add_option("names", bench_names, "benchmarks to run, e.g. dam_break_3d or fluid_box_3d_1000000 (default: all; "
+                    "--backend cuda adds the 1e7-particle boxes fluid_box_2d_10000000 and fluid_box_3d_10000000)");
+  bool bench_list = false;
+  bench->add_flag("--list", bench_list, "print the names of the benchmarks (for --backend and --quick), run nothing");
   bench->add_flag("--json", json, "print JSON records");
   bench->add_flag("--quick", quick, "small sizes only (a smoke run); with --accuracy: no sphere arrays");
   bench->add_flag("--accuracy", accuracy, "run time against error over kernels and resolutions");
@@ -69,7 +76,12 @@ int main(int argc, char** argv) {
   if (*check) return psph::cmd_check(case_path);
   if (*serve) return psph::cmd_serve(run_dir, serve_port, serve_bind);
   if (*figures) return psph::cmd_figures(run_dir, fig_pipelines);
+  if (*validate && validate_list) return psph::cmd_validate_list();
   if (*validate) return psph::cmd_validate(names, full, json, vbackend);
+  if (*bench && bench_list) {
+    for (const auto& spec : psph::bench_specs(vbackend, quick)) std::cout << spec.name << "\n";
+    return 0;
+  }
   if (*bench) return psph::cmd_bench(bench_names, json, vbackend, quick, accuracy, stability);
   if (*demo) return psph::cmd_demo(ro);
   return 1;

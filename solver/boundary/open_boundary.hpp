@@ -2,14 +2,14 @@
 // Open pressure inlet and outlet (ours: the references drive a drainage by a body force on the
 // reservoir gas, Pazdniakou 2018 §5.2; this is the alternative with imposed pressures). Two buffer
 // layers, each at least one support radius thick, lie across the ends of a periodic axis
-// (boundary/open_boundary_zone.hpp). Their particles are not moved by forces: they carry their
+// (core/open_boundary_zone.hpp). Their particles are not moved by forces: they carry their
 // buffer's pressure (and the density the equation of state gives it) and move along the axis with
 // the fluid's velocity at a mirror point inside, corrected by the outgoing characteristic so that
 // mass flows in or out until the fluid next to each buffer has its pressure. Fluid that leaves
 // through the outlet crosses the periodic seam into the inlet buffer and becomes the injected fluid
 // there, so the particle count stays fixed. Validated in cases/open_channel_2d.toml (VALIDATION.md).
-#include "fluid/eos.hpp"
-#include "fluid/material.hpp"
+#include "core/equation_of_state.hpp"
+#include "core/fluid_table.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/neighbour_list.hpp"
@@ -22,7 +22,7 @@ namespace psph {
 // spacing; without this the fluid next to the inlet could not reach the inlet's density and pressure
 // (measured in open_channel_2d: the flow fell to 30-60 % of the exact one once rows had recycled).
 template <int D>
-PSPH_HD inline Real buffer_density_ratio(const MaterialTable<D>& mats, int k, const Vec<D>& x, Real rho0) {
+PSPH_HD inline Real buffer_density_ratio(const FluidTable<D>& mats, int k, const Vec<D>& x, Real rho0) {
   const BufferZone z = mats.open.zone(x);
   if (z == BufferZone::None || !mats.is_fluid(k)) return Real(1);
   return density_from_pressure(mats[k], mats.open.pressure(z), rho0) / rho0;
@@ -44,7 +44,7 @@ struct BandSums {
 template <int D>
 struct BandSum {
   ParticleView<D> s;
-  MaterialTable<D> mats;
+  FluidTable<D> mats;
   PSPH_HD BandSums operator()(int i) const {
     BandSums out{};
     const int k = s.material[i];
@@ -76,7 +76,7 @@ constexpr Real kBufferShift = Real(0.01);
 template <int D>
 struct SetBufferVelocity {
   ParticleView<D> s;
-  MaterialTable<D> mats;
+  FluidTable<D> mats;
   NeighbourView<D> cells;
   NeighbourList<D> nb;
   Kernel<D> kern;
@@ -110,7 +110,7 @@ struct SetBufferVelocity {
 template <int D>
 struct ConvertInletFluid {
   ParticleView<D> s;
-  MaterialTable<D> mats;
+  FluidTable<D> mats;
   PSPH_HD void operator()(int i) const {
     const int k = s.material[i], to = mats.open.inlet_material;
     if (k == to || !mats.is_fluid(k) || mats.open.zone(s.x[i]) != BufferZone::Inlet) return;
@@ -125,7 +125,7 @@ struct ConvertInletFluid {
 template <int D>
 struct SetBufferState {
   ParticleView<D> s;
-  MaterialTable<D> mats;
+  FluidTable<D> mats;
   PSPH_HD void operator()(int i) const {
     const int k = s.material[i];
     if (!mats.is_fluid(k)) return;

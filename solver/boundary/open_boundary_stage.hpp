@@ -3,7 +3,7 @@
 // a periodic axis. Fluid that crosses into the inlet becomes the injected fluid; each step the
 // buffers take the velocity of the outgoing characteristic, then their imposed state.
 #include "boundary/open_boundary.hpp"
-#include "boundary/open_boundary_zone.hpp"
+#include "core/open_boundary_zone.hpp"
 #include "stage/step_context.hpp"
 
 namespace psph {

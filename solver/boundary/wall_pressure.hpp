@@ -12,8 +12,8 @@
 //                 fluid's pressure plus the body-force head, so it holds any sustained load.
 //                 Walls here are fixed or move at constant velocity (a_w = 0); elastic solids
 //                 present the same (solid/fluid_coupling.hpp).
-#include "fluid/eos.hpp"
-#include "fluid/material.hpp"
+#include "core/equation_of_state.hpp"
+#include "core/fluid_table.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
@@ -26,7 +26,7 @@ enum class WallPressure { Summation = 0, Extrapolated = 1 };
 // here, solid/fluid_coupling.hpp), into p; false (p untouched) without fluid within the support.
 template <int D>
 PSPH_HD inline bool extrapolate_fluid_pressure(const NeighbourList<D>& nb, const Kernel<D>& kern,
-                                               const ParticleView<D>& s, const MaterialTable<D>& mats, int i,
+                                               const ParticleView<D>& s, const FluidTable<D>& mats, int i,
                                                const Vec<D>& a_i, Real& p) {
   Real psum = 0, wsum = 0;
   nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
@@ -44,7 +44,7 @@ struct WallPressurePass {
   NeighbourList<D> nb;
   Kernel<D> kern;
   ParticleView<D> s;
-  MaterialTable<D> mats;
+  FluidTable<D> mats;
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
     if (mats[mi].kind != MaterialKind::Wall) return;

@@ -15,7 +15,7 @@
 //   free_slip:  v_w = sum_f v_f W_wf / sum_f W_wf: the walls present the fluid's own velocity, so
 //               they exert no shear (Adami, Hu & Adams 2012 §2.3's slip condition).
 #include "boundary/wall_normal.hpp"
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"

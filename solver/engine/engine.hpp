@@ -7,7 +7,7 @@
 
 #include "core/instability.hpp"
 #include "rigid/rigid_bodies.hpp"
-#include "scene/scene.hpp"
+#include "engine/scene.hpp"
 #include "stage/monitor_value.hpp"
 #include "state/checkpoint.hpp"
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "engine/simulation.hpp"
+
 namespace psph {
 
 template <int D, class B>

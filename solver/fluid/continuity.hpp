@@ -4,7 +4,7 @@
 // correction, off by default, is left out), so that positions and densities advance together: evaluated with the velocity of the previous step
 // instead, the density lags the motion and a resting tank gains energy (measured: a closed 2D
 // tank reached 1.4 m/s in 3 s).
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"

@@ -2,8 +2,8 @@
 // Density passes. Sums run over all neighbours of every material (fluid and wall particles alike:
 // the "virtual contribution" that removes the deficit at a material boundary, Pazdniakou §3.1.2).
 #include "boundary/open_boundary.hpp"
-#include "fluid/eos.hpp"
-#include "fluid/material.hpp"
+#include "core/equation_of_state.hpp"
+#include "core/fluid_table.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
@@ -37,7 +37,7 @@ struct DensitySummationPass {
   NeighbourList<D> nb;
   Kernel<D> kern;
   ParticleView<D> s;
-  MaterialTable<D> mats;
+  FluidTable<D> mats;
   bool normalised;
   bool number;         // eq. 40 form
   bool all_particles;  // false: walls far from any fluid keep their density and pressure
@@ -71,7 +71,7 @@ struct DensitySummationPass {
 template <int D>
 struct EquationOfStatePass {
   ParticleView<D> s;
-  MaterialTable<D> mats;
+  FluidTable<D> mats;
   PSPH_HD void operator()(int i) const {
     if (mats.is_solid(s.material[i])) return;  // solid/fluid_coupling.hpp
     s.p[i] = pressure_from_density(mats[s.material[i]], s.rho[i], s.rho0[i]);
@@ -82,7 +82,7 @@ struct EquationOfStatePass {
 template <int D>
 struct SetWallRestDensity {
   ParticleView<D> s;
-  MaterialTable<D> mats;
+  FluidTable<D> mats;
   PSPH_HD void operator()(int i) const {
     if (!mats.is_fluid(s.material[i])) {
       s.rho0[i] = s.rho[i];

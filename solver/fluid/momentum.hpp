@@ -1,7 +1,7 @@
 #pragma once
 // Fluid pair sums, fused in one neighbour loop: pressure force, viscous force, artificial
 // viscosity and XSPH. Gather form: each particle writes only its own outputs.
-#include "fluid/material.hpp"
+#include "core/fluid_table.hpp"
 #include "fluid/viscosity.hpp"
 #include "interface/contact_line.hpp"
 #include "interface/surface_tension.hpp"
@@ -28,7 +28,7 @@ template <int D>
 struct FluidParticle {
   Vec<D> v;
   Real rho, inv_rho, inv_m, p_rho2, p_V2, mu, c;
-  PSPH_HD FluidParticle(const ParticleView<D>& s, const MaterialTable<D>& mats, int i)
+  PSPH_HD FluidParticle(const ParticleView<D>& s, const FluidTable<D>& mats, int i)
       : v(s.v[i]), rho(s.rho[i]), inv_rho(Real(1) / s.rho[i]), inv_m(Real(1) / s.m[i]),
         p_rho2(s.p[i] * inv_rho * inv_rho), p_V2(s.p[i] * s.m[i] * inv_rho * s.m[i] * inv_rho),
         mu(mats[s.material[i]].viscosity), c(mats[s.material[i]].sound_speed) {}
@@ -43,7 +43,7 @@ struct FluidPairTerms {
 };
 template <int D>
 PSPH_HD PSPH_PAIR inline FluidPairTerms<D> fluid_pair_terms(const FluidParticle<D>& fi, const ParticleView<D>& s,
-                                                  const MaterialTable<D>& mats, const FluidForceOptions& opt, int j,
+                                                  const FluidTable<D>& mats, const FluidForceOptions& opt, int j,
                                                   const Vec<D>& rij, Real r, Real dw_r, Real V_j) {
   const int mj = s.material[j];
   const Real rho_j = s.rho[j];
@@ -80,7 +80,7 @@ struct FluidForcePass {
   NeighbourList<D> nb;
   Kernel<D> kern;
   ParticleView<D> s;
-  MaterialTable<D> mats;
+  FluidTable<D> mats;
   FluidForceOptions opt;
 
   PSPH_HD void operator()(int i) const {

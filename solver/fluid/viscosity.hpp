@@ -1,7 +1,7 @@
 #pragma once
 // The viscous term of the momentum equation, shared by the explicit force pass (fluid/momentum.hpp)
 // and the implicit (backward Euler) operator below.
-#include "fluid/material.hpp"
+#include "core/fluid_table.hpp"
 #include "kernels/kernel.hpp"
 #include "kernels/laplacian_correction.hpp"
 #include "neighbours/neighbour_list.hpp"
@@ -27,7 +27,7 @@ struct ImplicitViscosityOperator {
   NeighbourList<D> nb;
   Kernel<D> kern;
   ParticleView<D> s;
-  MaterialTable<D> mats;
+  FluidTable<D> mats;
   bool normalise;  // trace-normalised Laplacian (kernels/laplacian_correction.hpp)
   Real dt;
   const Vec<D>* in;
@@ -69,7 +69,7 @@ struct FluidDifference {
   const Vec<D>* a;
   const Vec<D>* b;
   ParticleView<D> s;
-  MaterialTable<D> mats;
+  FluidTable<D> mats;
   PSPH_HD void operator()(int i) const {
     out[i] = mats.moves_freely(s.material[i], s.x[i]) ? a[i] - b[i] : Vec<D>::zero();
   }
@@ -78,7 +78,7 @@ template <int D>
 struct SetFluidVelocity {
   const Vec<D>* from;
   ParticleView<D> s;
-  MaterialTable<D> mats;
+  FluidTable<D> mats;
   PSPH_HD void operator()(int i) const {
     if (mats.moves_freely(s.material[i], s.x[i])) s.v[i] = from[i];
   }

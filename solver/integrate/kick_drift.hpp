@@ -5,7 +5,7 @@
 // placed by their body's motion after the drift (rigid/rigid_stage.hpp).
 #include <cmath>
 
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "state/particles.hpp"
 

@@ -8,7 +8,7 @@
 #include <limits>
 #include <string>
 
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 
 namespace psph {
 

@@ -16,7 +16,7 @@
 // eq. 60 expands to +div n^, the opposite sign to its eq. 7; -div n^ is the one for which
 // the force on a gas bubble points into the gas, so that p_gas > p_liquid (the Laplace test,
 // validation/laplace_bubble.cpp).
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"

@@ -13,7 +13,7 @@
 // here are summed over fluids only (surface_tension.hpp, WallColour::FluidOnly), so that the walls'
 // colour does not feed back into itself.
 #include "boundary/wall_normal.hpp"
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"

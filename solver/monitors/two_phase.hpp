@@ -11,7 +11,7 @@
 
 #include "engine/engine.hpp"
 #include "monitors/monitor_region.hpp"
-#include "scene/scene.hpp"
+#include "engine/scene.hpp"
 
 namespace psph {
 

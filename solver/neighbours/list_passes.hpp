@@ -3,7 +3,7 @@
 // neighbour counts.
 #include <cstdint>
 
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/neighbour_list.hpp"
 

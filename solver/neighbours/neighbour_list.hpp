@@ -9,7 +9,7 @@
 // passes 2^31 near 50 million particles, below what one GPU holds.
 #include <cstdint>
 
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "neighbours/cell_grid.hpp"
 
 namespace psph {

@@ -6,7 +6,7 @@
 // pairs stay listed while strains stay below the lists' skin.)
 #include <cstdint>
 
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
 

@@ -58,7 +58,7 @@ class RigidBodies {
   std::vector<RigidBodyState> bodies_;
 };
 
-// The bodies of a scene at t = 0 (rigid/rigid_scene.hpp builds them from the particles).
+// The bodies of a scene at t = 0 (engine/rigid_scene.hpp builds them from the particles).
 struct SceneRigidBodies {
   std::vector<RigidBodyState> state;          // at t = 0
   std::vector<std::vector<int>> members;      // particle indices (= ids) of each body

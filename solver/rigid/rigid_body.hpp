@@ -6,7 +6,7 @@
 // reorderings: index_of_id finds each particle).
 #include <cstdint>
 
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
@@ -111,7 +111,7 @@ struct RigidContactPass {
       const Real share = mats.is_dynamic(mj) ? s.m[j] / (s.m[i] + s.m[j]) : Real(1);  // mu_ij / m_i
       a += rij * (Real(2) * share * c * c * (spacing - r) / (spacing * spacing * r));
     });
-    if (rigid_i) s.a[i] = a + mats.body_force_at(mi, s.x[i]);
+    if (rigid_i) s.a[i] = a + mats.body_force[mi];
     else s.a[i] += a;
   }
 };

@@ -2,6 +2,7 @@
 // Case files (TOML): strict parsing and checking. Every error names the file, the key and what was
 // expected, and is raised before anything is computed or written.
 #include <array>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -10,8 +11,8 @@
 #include <toml++/toml.h>
 
 #include "monitors/monitor_region.hpp"
-#include "scene/grain_pack.hpp"
-#include "scene/scene.hpp"
+#include "scene/shape.hpp"
+#include "engine/scene.hpp"
 #include "scene/visualisation_options.hpp"
 
 namespace psph {
@@ -20,14 +21,9 @@ struct CaseError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// One [[geometry]] entry: a shape (scene/shape.hpp) filled with a material, or "empty".
 struct GeometryShape {
-  enum class Kind { Box, Sphere, GrainPack } kind = Kind::Box;
-  std::array<double, 3> lower{0, 0, 0}, upper{0, 0, 0};  // box
-  std::array<double, 3> center{0, 0, 0};                 // sphere
-  double radius = 0;
-  bool concentric = false;    // sphere: layout = "concentric" (scene/concentric_layout.hpp)
-  GrainPackSpec pack;         // grain pack (its box is pack.lower/upper)
-  std::vector<Grain> grains;  // generated from pack when the case is read
+  std::shared_ptr<const Shape> shape;
   int material = -1;  // -1: "empty" (removes particles)
   std::array<double, 3> velocity{0, 0, 0};
   std::array<double, 3> angular_velocity{0, 0, 0};  // rigid bodies (rad/s, world frame; z in 2D)

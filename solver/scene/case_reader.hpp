@@ -154,6 +154,22 @@ class CaseReader {
     if (!n->is_table()) fail(key, "expected a table", n);
     return *n->as_table();
   }
+  // Reads each table of the array of tables [[key]] (none when absent; at most `most`, called
+  // `plural` in the message) with a reader named key[i], then refuses its unknown keys.
+  template <class F>
+  void each_table(const std::string& key, std::size_t most, const std::string& plural, F&& read) {
+    const toml::node* g = node(key);
+    if (!g) return;
+    const toml::array* arr = g->as_array();
+    if (!arr || !arr->is_array_of_tables()) fail(key, "expected an array of tables [[" + key + "]]", g);
+    if (arr->size() > most) fail(key, "expected at most " + std::to_string(most) + " " + plural, g);
+    int idx = 0;
+    for (const auto& e : *arr) {
+      CaseReader r(*e.as_table(), file_, qualified(key) + "[" + std::to_string(idx++) + "]");
+      read(r);
+      r.finish();
+    }
+  }
   // Rejects every key that was not read.
   void finish() const {
     for (const auto& [k, v] : t_) {

@@ -1,25 +1,14 @@
 #include "scene/scene_builder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
-#include "rigid/rigid_scene.hpp"
+#include "engine/rigid_scene.hpp"
 #include "scene/concentric_layout.hpp"
 
 namespace psph {
 namespace {
-
-bool contains(const GeometryShape& s, const double* x, int D) {
-  if (s.kind == GeometryShape::Kind::GrainPack) return in_grain_pack(s.pack, s.grains, x, D);
-  if (s.kind == GeometryShape::Kind::Box) {
-    for (int k = 0; k < D; ++k)
-      if (x[k] < s.lower[k] || x[k] > s.upper[k]) return false;
-    return true;
-  }
-  double r2 = 0;
-  for (int k = 0; k < D; ++k) r2 += (x[k] - s.center[k]) * (x[k] - s.center[k]);
-  return r2 <= s.radius * s.radius;
-}
 
 template <int D>
 double lattice_sum(KernelType type, double support, double spacing) {
@@ -78,106 +67,159 @@ Scene shear_box_scene(const ShearBox& b) {
   return sc;
 }
 
-void build_particles(Case& c) {
-  Scene& sc = c.scene;
+namespace {
+
+// What the builder knows while it places particles.
+class Builder {
+ public:
+  explicit Builder(Case& c)
+      : c_(c), sc_(c.scene), D_(c.scene.dimension), dx_(c.scene.options.spacing),
+        n_sum_(lattice_kernel_sum(D_, sc_.options.kernel, sc_.options.support_radius, dx_)),
+        jitter_(-sc_.options.jitter * dx_, sc_.options.jitter * dx_) {
+    sc_.x.clear(), sc_.v.clear(), sc_.mass.clear(), sc_.material.clear(), sc_.body.clear();
+    sc_.body_angular_velocity.clear();
+    // Each geometry of a rigid material is one body.
+    body_of_geometry_.assign(c.geometry.size(), -1);
+    for (std::size_t g = 0; g < c.geometry.size(); ++g) {
+      const int m = c.geometry[g].material;
+      if (m >= 0 && sc_.materials[m].props.kind == MaterialKind::Rigid) {
+        body_of_geometry_[g] = static_cast<int>(sc_.body_angular_velocity.size());
+        sc_.body_angular_velocity.push_back(c.geometry[g].angular_velocity);
+      }
+    }
+    body_count_.assign(sc_.body_angular_velocity.size(), 0);
+  }
+
+  // The last geometry holding x owns it (-1: none).
+  int owner_of(const double* x) const {
+    int owner = -1;
+    for (std::size_t g = 0; g < c_.geometry.size(); ++g)
+      if (c_.geometry[g].shape->contains(x)) owner = static_cast<int>(g);
+    return owner;
+  }
+
+  // A particle of geometry g at x standing for `volume` (a lattice site: dx^D).
+  void add(const double* x, int g, double volume) {
+    const GeometryShape& owner = c_.geometry[g];
+    const SceneMaterial& m = sc_.materials[owner.material];
+    const bool is_fluid = m.props.kind == MaterialKind::Fluid;
+    for (int k = 0; k < D_; ++k) {
+      double xk = x[k] + (is_fluid && sc_.options.jitter > 0 ? jitter_(rng_) : 0.0);
+      const double L = sc_.upper[k] - sc_.lower[k];
+      if (sc_.periodic[k]) xk = xk < sc_.lower[k] ? xk + L : xk >= sc_.upper[k] ? xk - L : xk;
+      sc_.x.push_back(xk), sc_.v.push_back(owner.velocity[k]);
+    }
+    // The lattice's mass (its summed density is the rest density) in proportion to the volume.
+    sc_.mass.push_back(m.props.rest_density / n_sum_ * volume / std::pow(dx_, D_));
+    sc_.material.push_back(owner.material);
+    const int b = body_of_geometry_[g];
+    sc_.body.push_back(b);
+    if (b >= 0) ++body_count_[b];
+    if (m.props.kind != MaterialKind::Wall) ++moving_;
+  }
+
+  int body_of(std::size_t g) const { return body_of_geometry_[g]; }
+  long body_count(int b) const { return body_count_[b]; }
+  long moving() const { return moving_; }
+
+ private:
+  Case& c_;
+  Scene& sc_;
+  const int D_;
+  const double dx_, n_sum_;
+  std::vector<int> body_of_geometry_;
+  std::vector<long> body_count_;
+  long moving_ = 0;  // fluid, elastic and rigid particles: what the forces move
+  std::mt19937_64 rng_{12345};  // fixed seed: the same disorder on every run
+  std::uniform_real_distribution<double> jitter_;
+};
+
+bool in_part(const Bounds& part, const double* x) {
+  for (int k = 0; k < part.dimension; ++k)
+    if (x[k] < part.lower[k] || x[k] >= part.upper[k]) return false;
+  return true;
+}
+
+// The domain's lattice sites in `part`, each given to the last shape containing it.
+void place_lattice(Case& c, Builder& b, const Bounds& part) {
+  const Scene& sc = c.scene;
   const int D = sc.dimension;
   const double dx = sc.options.spacing;
-  int n[3] = {1, 1, 1};
+  int lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
   long total = 1;
   for (int k = 0; k < D; ++k) {
-    n[k] = static_cast<int>(std::floor((sc.upper[k] - sc.lower[k]) / dx + 1e-6));
-    total *= n[k];
+    const int n = static_cast<int>(std::floor((sc.upper[k] - sc.lower[k]) / dx + 1e-6));
+    total *= n;
+    lo[k] = std::clamp(static_cast<int>(std::ceil((part.lower[k] - sc.lower[k]) / dx - 0.5)), 0, n);
+    hi[k] = std::clamp(static_cast<int>(std::ceil((part.upper[k] - sc.lower[k]) / dx - 0.5)), lo[k], n);
   }
   if (total > 400'000'000L)
     throw CaseError(c.file + ": discretisation.spacing: the domain holds " + std::to_string(total) +
                     " lattice sites; expected at most 4e8");
-  const double n_sum = lattice_kernel_sum(D, sc.options.kernel, sc.options.support_radius, dx);
-  sc.x.clear(), sc.v.clear(), sc.mass.clear(), sc.material.clear(), sc.body.clear();
-  sc.body_angular_velocity.clear();
-  // Each geometry of a rigid material is one body.
-  std::vector<int> body_of_geometry(c.geometry.size(), -1);
-  for (std::size_t g = 0; g < c.geometry.size(); ++g) {
-    const int m = c.geometry[g].material;
-    if (m >= 0 && sc.materials[m].props.kind == MaterialKind::Rigid) {
-      body_of_geometry[g] = static_cast<int>(sc.body_angular_velocity.size());
-      sc.body_angular_velocity.push_back(c.geometry[g].angular_velocity);
-    }
-  }
-  std::vector<long> body_count(sc.body_angular_velocity.size(), 0);
-  long moving = 0;  // fluid, elastic and rigid particles: what the forces move
-  int idx[3] = {0, 0, 0};
-  std::mt19937_64 rng(12345);  // fixed seed: the same disorder on every run
-  std::uniform_real_distribution<double> jitter(-sc.options.jitter * dx, sc.options.jitter * dx);
-  // The last geometry holding x owns it (-1: none).
-  auto owner_of = [&](const double* x) {
-    int owner = -1;
-    for (std::size_t g = 0; g < c.geometry.size(); ++g)
-      if (contains(c.geometry[g], x, D)) owner = static_cast<int>(g);
-    return owner;
-  };
-  // A particle of geometry g at x standing for `volume` (a lattice site: dx^D).
-  auto add = [&](const double* x, int g, double volume) {
-    const GeometryShape& owner = c.geometry[g];
-    const SceneMaterial& m = sc.materials[owner.material];
-    const bool is_fluid = m.props.kind == MaterialKind::Fluid;
-    for (int k = 0; k < D; ++k) {
-      double xk = x[k] + (is_fluid && sc.options.jitter > 0 ? jitter(rng) : 0.0);
-      if (sc.periodic[k]) xk = xk < sc.lower[k] ? xk + (sc.upper[k] - sc.lower[k]) : xk >= sc.upper[k] ? xk - (sc.upper[k] - sc.lower[k]) : xk;
-      sc.x.push_back(xk), sc.v.push_back(owner.velocity[k]);
-    }
-    // The lattice's mass (its summed density is the rest density) in proportion to the volume.
-    sc.mass.push_back(m.props.rest_density / n_sum * volume / std::pow(dx, D));
-    sc.material.push_back(owner.material);
-    const int b = body_of_geometry[g];
-    sc.body.push_back(b);
-    if (b >= 0) ++body_count[b];
-    if (m.props.kind != MaterialKind::Wall) ++moving;
-  };
-  for (long s = 0; s < total; ++s) {
+  for (int k = 0; k < D; ++k)
+    if (hi[k] == lo[k]) return;
+  int idx[3] = {lo[0], lo[1], lo[2]};
+  for (;;) {
     double x[3];
     for (int k = 0; k < D; ++k) x[k] = sc.lower[k] + (idx[k] + 0.5) * dx;
-    const int g = owner_of(x);
-    if (g >= 0 && c.geometry[g].material >= 0 && !c.geometry[g].concentric) add(x, g, std::pow(dx, D));
+    const int g = b.owner_of(x);
+    if (g >= 0 && c.geometry[g].material >= 0 && !c.geometry[g].shape->places_points()) b.add(x, g, std::pow(dx, D));
     int d = 0;
-    while (d < D && ++idx[d] >= n[d]) idx[d++] = 0;
+    while (d < D && ++idx[d] >= hi[d]) idx[d] = lo[d], ++d;
+    if (d == D) break;
   }
-  // Concentric spheres place their own points, kept where no later geometry (nor the domain's
-  // edge) takes them.
+}
+
+// Shapes with their own layout place their points, kept where no later geometry (nor the
+// domain's edge) takes them.
+void place_own_points(Case& c, Builder& b, const Bounds& part) {
+  const Scene& sc = c.scene;
   for (std::size_t g = 0; g < c.geometry.size(); ++g) {
     const GeometryShape& gs = c.geometry[g];
-    if (!gs.concentric || gs.material < 0) continue;
-    for (const LayoutPoint& p : concentric_points(gs.center, gs.radius, dx, D)) {
+    if (!gs.shape->places_points() || gs.material < 0) continue;
+    for (const LayoutPoint& p : gs.shape->points(sc.options.spacing)) {
       bool inside = true;
-      for (int k = 0; k < D; ++k) {
+      for (int k = 0; k < sc.dimension; ++k) {
         inside = inside && p.x[k] >= sc.lower[k] && p.x[k] < sc.upper[k];
         // Across a periodic seam its shells would land on lattice sites the other side owns.
         if (sc.periodic[k] && !inside)
           throw CaseError(c.file + ": geometry[" + std::to_string(g) + "]: a concentric sphere must lie inside the "
                           "domain along its periodic axes; expected a centre and radius that keep it off the seam");
       }
-      if (inside && owner_of(p.x.data()) == static_cast<int>(g)) add(p.x.data(), static_cast<int>(g), p.volume);
+      if (inside && in_part(part, p.x.data()) && b.owner_of(p.x.data()) == static_cast<int>(g))
+        b.add(p.x.data(), static_cast<int>(g), p.volume);
     }
   }
+}
+
+// Every rigid body holds particles and can turn: in 2D a moment of inertia about z, in 3D a
+// regular inertia tensor (not a single particle, not a line of them).
+void check_rigid_bodies(const Case& c, const Builder& b) {
+  const Scene& sc = c.scene;
+  const int D = sc.dimension;
+  const double dx = sc.options.spacing;
   for (std::size_t g = 0; g < c.geometry.size(); ++g)
-    if (body_of_geometry[g] >= 0 && body_count[body_of_geometry[g]] == 0)
+    if (b.body_of(g) >= 0 && b.body_count(b.body_of(g)) == 0)
       throw CaseError(c.file + ": geometry[" + std::to_string(g) +
                       "]: this rigid body holds no particle (later geometries cover it, or it is smaller than a spacing)");
-  // A body must be able to turn: in 2D a moment of inertia about z, in 3D a regular inertia tensor
-  // (not a single particle, not a line of them).
   const SceneRigidBodies rb = rigid_bodies_of(sc);
   for (std::size_t g = 0; g < c.geometry.size(); ++g) {
-    const int b = body_of_geometry[g];
-    if (b < 0 || D == 1) continue;
-    const Mat3d& I = rb.state[b].inertia0;
+    const int body = b.body_of(g);
+    if (body < 0 || D == 1) continue;
+    const Mat3d& I = rb.state[body].inertia0;
     const double det = I[0] * (I[4] * I[8] - I[5] * I[7]) - I[1] * (I[3] * I[8] - I[5] * I[6]) + I[2] * (I[3] * I[7] - I[4] * I[6]);
-    const double scale = rb.state[b].mass * dx * dx;
+    const double scale = rb.state[body].mass * dx * dx;
     if (D == 2 ? !(I[8] > 1e-9 * scale) : !(det > 1e-9 * scale * scale * scale))
       throw CaseError(c.file + ": geometry[" + std::to_string(g) + "]: this rigid body's " +
-                      std::to_string(body_count[b]) + " particles " + (D == 2 ? "have no moment of inertia" : "lie on a line") +
-                      "; expected a body at least two spacings across");
+                      std::to_string(b.body_count(body)) + " particles " +
+                      (D == 2 ? "have no moment of inertia" : "lie on a line") + "; expected a body at least two spacings across");
   }
-  add_rigid_rotation(sc);
-  // Each [[solid_load]] takes the particles of its material inside its box.
+}
+
+// Each [[solid_load]] takes the particles of its material inside its box.
+void assign_solid_loads(Case& c) {
+  Scene& sc = c.scene;
+  const int D = sc.dimension;
   sc.load_mask.assign(sc.material.size(), 0);
   for (std::size_t l = 0; l < sc.solid_loads.size(); ++l) {
     const SceneSolidLoad& ld = sc.solid_loads[l];
@@ -191,9 +233,24 @@ void build_particles(Case& c) {
     if (taken == 0)
       throw CaseError(c.file + ": solid_load[" + std::to_string(l) + "]: the box holds no particle of its material");
   }
-  if (moving == 0)
+}
+
+}  // namespace
+
+Bounds domain_bounds(const Scene& sc) { return Bounds{sc.dimension, sc.lower, sc.upper}; }
+
+void build_particles(Case& c) { build_particles(c, domain_bounds(c.scene)); }
+
+void build_particles(Case& c, const Bounds& part) {
+  Builder b(c);
+  place_lattice(c, b, part);
+  place_own_points(c, b, part);
+  check_rigid_bodies(c, b);
+  add_rigid_rotation(c.scene);
+  assign_solid_loads(c);
+  if (b.moving() == 0)
     throw CaseError(c.file + ": geometry: the geometry yields no fluid, elastic or rigid particles (" +
-                    std::to_string(sc.material.size()) + " particles in all); check the shapes and the domain");
+                    std::to_string(c.scene.material.size()) + " particles in all); check the shapes and the domain");
 }
 
 }  // namespace psph

@@ -6,8 +6,14 @@
 
 namespace psph {
 
-// Fills case.scene's particles (a particle standing for volume V weighs rho0 / lattice sum * V / dx^D). Throws CaseError when the geometry yields no fluid or elastic particle.
+// Fills case.scene's particles (a particle standing for volume V weighs rho0 / lattice sum * V /
+// dx^D). Throws CaseError when the geometry yields no fluid, elastic or rigid particle.
 void build_particles(Case& c);
+// The same, only the particles inside `part` (lower <= x < upper on every axis): a share of the
+// domain, as a process of a decomposed run will build its own. The checks (every rigid body holds
+// particles, the loads take some) then see only that share.
+void build_particles(Case& c, const Bounds& part);
+Bounds domain_bounds(const Scene& sc);
 
 // A periodic cube of edge `length` filled with one fluid on a lattice of `per_axis` sites per axis,
 // support = support_per_spacing spacings (cubic spline), carrying a shear wave

@@ -10,7 +10,7 @@
 //   with Monaghan's kernel factor W_ij, missing there and in Pazdniakou eq. 76): moves the particle only.
 // Pair terms are antisymmetric: momentum is kept. The energy they take is not in the monitors'
 // dissipated_energy (the damping's only). Runs after the solid's force pass when either is on.
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"

@@ -1,12 +1,12 @@
 #pragma once
-// Clamps of elastic solids: a wall particle w with a mirror partner p (solid/clamp_partners.hpp)
+// Clamps of elastic solids: a wall particle w with a mirror partner p (engine/clamp_partners.hpp)
 // presents the partner's displacement mirrored through the clamp surface, u_w = 2 u_wall - u_p
 // (the odd extension, as the no-slip mirror of Adami, Hu & Adams 2012 eq. 23 is for velocities);
 // walls without a partner present their own displacement. The stress form's elastic energy is the
 // solid's own, sum_s V_s sigma_s : eps_s / 2, with the walls' u_w inside eps_s; as u_w follows u_p,
 // the partner also feels -dE/du_p through u_w (clamp_reaction), which keeps
 // the forces the gradient of that energy: without this chain rule a clamped rod went unstable.
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "solid/strain.hpp"

@@ -3,7 +3,7 @@
 // quasi-static loading: Pazdniakou (2018) §3.1.4 damps the solid with a parameter theta in its
 // Verlet update, v <- (1 - theta) v per step, which is zeta = theta / dt. The paper gives no value;
 // we choose zeta near the lowest mode's angular frequency, which damps it within a period.
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "state/particles.hpp"
 
 namespace psph {

@@ -16,7 +16,7 @@
 // Walls in reach clamp the solid through the displacement they present (solid/clamp.hpp).
 // Pair moduli are harmonic means (as in Deptulski eq. 2.45; his eq. 2.90 assumes uniform moduli, so
 // this is our choice), so that damage can later lower them per particle.
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
@@ -66,7 +66,7 @@ struct ElasticForcePass {
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
     if (!mats.is_elastic(mi)) return;
-    s.a[i] = elastic_acceleration(i) + mats.body_force_at(mi, s.x[i]) - s.v[i] * damping;
+    s.a[i] = elastic_acceleration(i) + mats.body_force[mi] - s.v[i] * damping;
   }
 };
 

@@ -26,7 +26,7 @@ class ElasticStage {
  public:
   bool active() const { return active_; }
 
-  // `mirror`: each particle's clamp partner (solid/clamp_partners.hpp).
+  // `mirror`: each particle's clamp partner (engine/clamp_partners.hpp).
   void setup(StepContext<D, B>& cx, const SolidOptions& o, const std::vector<std::int32_t>& mirror) {
     o_ = o;
     active_ = cx.elastic;

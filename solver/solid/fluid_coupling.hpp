@@ -34,7 +34,7 @@ struct SolidInterfacePressurePass {
   NeighbourList<D> nb;
   Kernel<D> kern;
   ParticleView<D> s;
-  MaterialTable<D> mats;
+  FluidTable<D> mats;
   SolidCoupling mode;
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
@@ -53,7 +53,7 @@ struct AmbientPressurePass {
   NeighbourList<D> nb;
   Kernel<D> kern;
   ParticleView<D> s;
-  MaterialTable<D> mats;
+  FluidTable<D> mats;
   PSPH_HD void operator()(int i) const {
     if (!mats.is_elastic(s.material[i])) return;
     const Real w0 = s.fluid_contact[i] ? kern.W(Real(0)) : Real(0);
@@ -76,7 +76,7 @@ struct FluidOnSolidPass {
   NeighbourList<D> nb;
   Kernel<D> kern;
   ParticleView<D> s;
-  MaterialTable<D> mats;
+  FluidTable<D> mats;
   FluidForceOptions opt;
   bool pressure;
   PSPH_HD void operator()(int i) const {

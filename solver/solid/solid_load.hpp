@@ -12,7 +12,7 @@
 #include <array>
 #include <cstdint>
 
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "state/particles.hpp"
 
 namespace psph {

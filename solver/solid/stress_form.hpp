@@ -48,7 +48,7 @@ struct StressForcePass {
     });
     Vec<D> a = f * (Real(1) / s.rho[i]);
     if (s.mirror[i] >= 0) a += clamp_reaction(nb, kern, s, mats, s.index_of_id[s.mirror[i]]) * (Real(1) / s.m[i]);
-    s.a[i] = a + mats.body_force_at(mi, s.x[i]) - s.v[i] * damping;
+    s.a[i] = a + mats.body_force[mi] - s.v[i] * damping;
   }
 };
 

@@ -5,6 +5,7 @@
 // inputs, monitors and checkpoint data.
 // Every global reduction goes through sum_of/max_of: the one place where a reduction over
 // several processes (an allreduce) will go.
+#include "core/fluid_table.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_stage.hpp"
 #include "state/particles.hpp"
@@ -16,7 +17,7 @@ struct StepContext {
   ParticleState<D, B> s;
   CellGrid<D> grid{};
   Kernel<D> kern{};
-  MaterialTable<D> mats{};
+  FluidTable<D> mats{};  // materials, body-force regions, open-boundary buffers
   NeighbourStage<D, B> neighbours;
   double spacing = 0, smoothing_length = 0;
   // What the case holds, and what the lists must serve.

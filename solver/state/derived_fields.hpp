@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "state/fields.hpp"
 
 namespace psph {

@@ -41,7 +41,7 @@ struct ParticleView {
   Real* shepard = nullptr;   // the gradient correction S_i, G_i, K_i of the strain pass (solid/strain.hpp)
   Vec<D>* shepard_grad = nullptr;
   Mat<D>* kcorr = nullptr;
-  std::int32_t* mirror = nullptr;       // clamps: id of the mirror partner, -1 if none (solid/clamp_partners.hpp)
+  std::int32_t* mirror = nullptr;       // clamps: id of the mirror partner, -1 if none (engine/clamp_partners.hpp)
   std::int32_t* index_of_id = nullptr;  // current index of each id (clamps, rigid bodies)
   // Fluids with elastic solids only (null otherwise): solid/fluid_coupling.hpp.
   Real* visc_scale = nullptr;  // a fluid particle's Laplacian correction D / lambda of the last force pass

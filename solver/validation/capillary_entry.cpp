@@ -18,8 +18,7 @@ struct Slit {
 };
 
 Slit slit_of(const Case& c) {
-  const GeometryShape& a = c.geometry.at(2);
-  const GeometryShape& b = c.geometry.at(3);
+  const Bounds a = c.geometry.at(2).shape->bounds(), b = c.geometry.at(3).shape->bounds();
   return Slit{a.upper[0], b.lower[0], a.upper[1]};
 }
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "scene/case_file.hpp"
-#include "scene/scene.hpp"
+#include "engine/scene.hpp"
 
 namespace psph {
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "engine/engine.hpp"
-#include "rigid/rigid_scene.hpp"
+#include "engine/rigid_scene.hpp"
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
 

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "boundary/open_boundary_zone.hpp"
+#include "core/open_boundary_zone.hpp"
 #include "fluid/fluid_options.hpp"
 #include "fluid/body_force_region.hpp"
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 #include "integrate/step_options.hpp"
 #include "interface/interface_options.hpp"
 #include "kernels/kernel.hpp"

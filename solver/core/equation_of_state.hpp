@@ -2,7 +2,7 @@
 // Weakly compressible equations of state.
 #include <cmath>
 
-#include "fluid/material.hpp"
+#include "core/material.hpp"
 
 namespace psph {
 

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "rigid/rigid_bodies.hpp"
-#include "scene/scene.hpp"
+#include "engine/scene.hpp"
 
 namespace psph {
 

@@ -1,4 +1,4 @@
-#include "solid/clamp_partners.hpp"
+#include "engine/clamp_partners.hpp"
 
 #include <algorithm>
 #include <cmath>

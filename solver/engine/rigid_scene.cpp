@@ -1,4 +1,4 @@
-#include "rigid/rigid_scene.hpp"
+#include "engine/rigid_scene.hpp"
 
 #include <cmath>
 

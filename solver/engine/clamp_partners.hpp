@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "engine/scene.hpp"
 
 namespace psph {
 

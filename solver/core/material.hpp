@@ -2,7 +2,6 @@
 // Material table: each particle carries a material index; the table says what the material is
 // (its kind) and holds its constants. Passed by value to the passes, so it lives in registers or
 // constant cache on the GPU.
-#include "boundary/open_boundary_zone.hpp"
 #include "core/vec.hpp"
 
 namespace psph {
@@ -17,7 +16,7 @@ struct Material {
   Real sound_speed = 1;      // m/s
   Real viscosity = 0;        // dynamic viscosity (Pa s); walls take the fluid's (see momentum.hpp)
   Real tait_gamma = 7;
-  Real background_pressure = 0;  // Pa, added by the EOS (fluid/eos.hpp); one value for all materials
+  Real background_pressure = 0;  // Pa, added by the EOS (core/equation_of_state.hpp); one value for all materials
   // Elastic solids (solid/elastic_force.hpp): small-strain isotropic moduli, sigma = k tr(eps) I +
   // 2 mu dev(eps) (Deptulski eq. 2.84); sound_speed is then the P-wave speed sqrt((k + 4 mu/3)/rho).
   Real bulk_modulus = 0;   // k (Pa)
@@ -28,24 +27,11 @@ struct Material {
 };
 
 constexpr int kMaxMaterials = 8;
-constexpr int kMaxForceRegions = 4;
-
-// A body force on one material inside a box only: e.g. the gas of a reservoir that drives a
-// drainage through a periodic cell (Pazdniakou 2018 §5.2).
-template <int D>
-struct ForceRegion {
-  int material = 0;
-  Vec<D> lower, upper, acceleration;
-};
-
 template <int D>
 struct MaterialTable {
   int count = 0;
   Material m[kMaxMaterials];
-  Vec<D> body_force[kMaxMaterials];  // m/s^2, per material
-  int region_count = 0;
-  ForceRegion<D> region[kMaxForceRegions];
-  OpenBoundaryZone<D> open;  // pressure inlet and outlet buffers (boundary/open_boundary.hpp)
+  Vec<D> body_force[kMaxMaterials];  // m/s^2, per material (fluids: plus their regions, core/fluid_table.hpp)
 
   PSPH_HD const Material& operator[](int k) const { return m[k]; }
   PSPH_HD bool is_fluid(int k) const { return m[k].kind == MaterialKind::Fluid; }
@@ -69,18 +55,6 @@ struct MaterialTable {
   PSPH_HD bool is_dynamic(int k) const { return m[k].kind != MaterialKind::Wall; }
   // Particles kicked by their own acceleration: a rigid particle moves with its body (rigid/).
   PSPH_HD bool is_kicked(int k) const { return is_dynamic(k) && !is_rigid(k); }
-  // A fluid particle that the forces move: not in an open boundary's buffer (whose state is imposed).
-  PSPH_HD bool moves_freely(int k, const Vec<D>& x) const { return is_fluid(k) && open.zone(x) == BufferZone::None; }
-  // Body force (m/s^2) on a particle of material k at x: the material's plus its regions'.
-  PSPH_HD Vec<D> body_force_at(int k, const Vec<D>& x) const {
-    Vec<D> g = body_force[k];
-    for (int r = 0; r < region_count; ++r) {
-      bool in = region[r].material == k;
-      for (int d = 0; d < D; ++d) in = in && x[d] >= region[r].lower[d] && x[d] < region[r].upper[d];
-      if (in) g += region[r].acceleration;
-    }
-    return g;
-  }
 };
 
 }  // namespace psph

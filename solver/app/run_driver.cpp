@@ -1,0 +1,315 @@
+#include "app/run_driver.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+#include "app/interrupts.hpp"
+#include "io/checkpoint_file.hpp"
+
+namespace psph {
+namespace {
+
+std::string seconds_text(double s) {
+  char b[32];
+  if (s < 120) std::snprintf(b, sizeof b, "%.0f s", s);
+  else if (s < 7200) std::snprintf(b, sizeof b, "%.1f min", s / 60);
+  else std::snprintf(b, sizeof b, "%.1f h", s / 3600);
+  return b;
+}
+
+int refuse(const std::string& what) {
+  std::cerr << "poresph: " << what << "\n";
+  return 2;
+}
+
+}  // namespace
+
+int RunDriver::run() {
+  if (const int code = open()) return code;
+  plan_outputs();
+  if (const int code = start()) return code;
+  catch_interrupts();
+  loop();
+  release_interrupts();
+  finish();
+  return code_;
+}
+
+int RunDriver::open() {
+  try {
+    engine_ = make_engine(c_.scene, opt_.backend);
+  } catch (const std::exception& e) {
+    return refuse(e.what());
+  }
+  if (!opt_.restart.empty()) {
+    restart_file_ = std::filesystem::is_directory(opt_.restart) ? latest_checkpoint(opt_.restart) : opt_.restart;
+    try {
+      if (restart_file_.empty()) throw CheckpointError(opt_.restart + ": no checkpoint (checkpoints/step_*.ckpt) in this directory");
+      engine_->restore(read_checkpoint_file(restart_file_));
+    } catch (const std::exception& e) {
+      const std::string msg = e.what();
+      return refuse("--restart " + (msg.rfind(restart_file_, 0) == 0 ? "" : restart_file_ + ": ") + msg);
+    }
+    if (engine_->time() >= c_.end_time) {
+      std::ostringstream m;
+      m << "--restart " << restart_file_ << ": the checkpoint is at t = " << engine_->time()
+        << " s, not before the case's time.end = " << c_.end_time << " s; raise time.end to continue";
+      return refuse(m.str());
+    }
+  }
+  try {
+    insitu_ = std::make_unique<InSituSession>(c_, opt_.pipelines, opt_.live);
+  } catch (const std::exception& e) {
+    return refuse(e.what());
+  }
+  if (opt_.serve >= 0 && !dashboard_available())
+    return refuse("--serve: this poresph was built without the dashboard (cpp-httplib was not found at build time)");
+  dir_ = opt_.out.empty() ? default_run_directory(c_.name) : opt_.out;
+  try {
+    rd_ = std::make_unique<RunDirectory>(dir_, c_.source_text);
+  } catch (const std::exception& e) {
+    return refuse(e.what());
+  }
+  return 0;
+}
+
+void RunDriver::plan_outputs() {
+  std::ostringstream head;
+  head << "poresph run " << c_.file << ": case " << c_.name << ", " << engine_->particles() << " particles, "
+       << c_.scene.dimension << "D, backend " << engine_->backend() << " (" << engine_->device() << "), "
+       << precision_name() << " precision, end time " << c_.end_time << " s";
+  log(head.str());
+  if (!restart_file_.empty())
+    log("restarted from " + restart_file_ + " at t = " + std::to_string(engine_->time()) + " s, step " +
+        std::to_string(engine_->steps()));
+  extracts_ = particle_output_available();
+  if (!extracts_) log("note: built without ParaView's VTK, no particle extracts are written");
+  if (!insitu_->note().empty()) log(insitu_->note());
+  // Extracts hold what the pipelines need, so that `poresph figures` can re-render from them.
+  std::vector<std::string> fields = c_.output.fields;
+  const std::vector<std::string> have = engine_->field_names();
+  for (const auto& f : insitu_->fields())
+    if (std::count(fields.begin(), fields.end(), f) == 0 && std::count(have.begin(), have.end(), f)) fields.push_back(f);
+  writer_ = std::make_unique<ParticleWriter>(rd_->extracts(), fields);
+  const double t_end = c_.end_time, t = engine_->time();
+  dt_mon_ = c_.output.monitor_interval > 0 ? c_.output.monitor_interval : t_end / 100;
+  // With pipelines: a frame every visualisation.interval (default a fiftieth of the run), and
+  // extracts at the same times unless output.extract_interval says otherwise.
+  dt_vis_ = c_.visualisation.interval > 0 ? c_.visualisation.interval : t_end / 50;
+  dt_ext_ = c_.output.extract_interval > 0 ? c_.output.extract_interval : insitu_->active() ? dt_vis_ : t_end;
+  const double dt_ck = c_.output.checkpoint_interval > 0 ? c_.output.checkpoint_interval : t_end / 10;
+  mon_ = OutputClock(dt_mon_, t), ext_ = OutputClock(dt_ext_, t), ck_ = OutputClock(dt_ck, t), vis_ = OutputClock(dt_vis_, t);
+  if (c_.two_phase) two_phase_ = std::make_unique<TwoPhaseMonitor>(c_.scene, c_.monitor_region);
+}
+
+int RunDriver::start() {
+  t0_ = last_print_ = clock::now();  // the wall time includes Catalyst's start-up and first frame
+  RunStatus base;
+  base.case_name = c_.name, base.backend = engine_->backend(), base.device = engine_->device();
+  base.precision = precision_name(), base.dimension = c_.scene.dimension, base.particles = engine_->particles();
+  base.end_time = c_.end_time, base.extracts = extracts_, base.pipelines = insitu_->active();
+  base.monitor_interval = dt_mon_, base.extract_interval = dt_ext_, base.visualisation_interval = dt_vis_;
+  supervision_ = std::make_unique<RunSupervision>(rd_->path(), base);
+  supervision_->report(*engine_, "starting", wall_now(), true);
+  if (opt_.serve >= 0) {
+    try {
+      dashboard_ = std::make_unique<DashboardServer>(DashboardOptions{rd_->path(), "", opt_.bind, opt_.serve});
+    } catch (const std::exception& e) {  // nothing has run: no run directory is left
+      rd_.reset();
+      std::filesystem::remove_all(dir_);
+      return refuse(e.what());
+    }
+    // The token goes to the terminal only: log.txt is served to anyone who can reach the port.
+    log("dashboard: " + dashboard_->url() + " (to pause, resume or stop: the token in " + rd_->path() + "/token)");
+    std::cout << "dashboard with control: " << dashboard_->url() << "?token=" << supervision_->token() << std::endl;
+  }
+  monitor();
+  if (extracts_) writer_->write(*engine_);
+  if (!insitu_->active()) return 0;
+  try {
+    insitu_->start(*engine_, c_, rd_->path(), [&](const std::string& l) { log(l); });
+  } catch (const std::exception& e) {
+    log(std::string("failed: in-situ visualisation: ") + e.what());
+    supervision_->finish(*engine_, "failed", std::string("in-situ visualisation: ") + e.what(), wall_now());
+    return 4;
+  }
+  return 0;
+}
+
+void RunDriver::loop() {
+  try {
+    while (engine_->time() < c_.end_time) {
+      const double t_end = c_.end_time;
+      engine_->step(std::min({t_end, mon_.next(), ext_.next(), insitu_->active() ? vis_.next() : t_end}));
+      outputs_due();
+      progress_line();
+      if (controls()) break;
+    }
+  } catch (const InstabilityError& e) {
+    status_ = "unstable", code_ = 3, diagnostic_ = e.what();
+    log(std::string("unstable: ") + e.what());
+  } catch (const std::exception& e) {
+    status_ = "failed", code_ = 4, diagnostic_ = e.what();
+    log(std::string("failed: ") + e.what());
+  }
+}
+
+void RunDriver::outputs_due() {
+  const double t = engine_->time();
+  if (mon_.due(t)) monitor(), mon_.pass(t);
+  if (ext_.due(t)) {
+    if (extracts_) writer_->write(*engine_);
+    ext_.pass(t);
+  }
+  if (insitu_->active() && vis_.due(t)) insitu_->output(*engine_), vis_.pass(t);
+  if (ck_.due(t)) checkpoint(), ck_.pass(t);
+}
+
+void RunDriver::progress_line() {
+  const auto now = clock::now();
+  const double t = engine_->time(), t_end = c_.end_time;
+  if (opt_.quiet || !(std::chrono::duration<double>(now - last_print_).count() > 2.0 || t >= t_end)) return;
+  last_print_ = now;
+  const double wall = std::chrono::duration<double>(now - t0_).count();
+  const double sps = engine_->steps() / std::max(wall, 1e-9);
+  const double left = (t_end - t) / std::max(t, 1e-300) * wall;
+  char line[256];
+  std::snprintf(line, sizeof line, "step %ld  t = %.6g s (%.1f %%)  dt = %.3g s  %.1f steps/s  time left %s",
+                engine_->steps(), t, 100 * t / t_end, engine_->last_dt(), sps, seconds_text(left).c_str());
+  log(line);
+}
+
+bool RunDriver::controls() {
+  take_requests();
+  if (paused_ && !stop_) {
+    supervision_->report(*engine_, "paused", wall_now(), true);
+    while (paused_ && !stop_ && !caught_interrupt()) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      take_requests();
+      if (paused_) supervision_->report(*engine_, "paused", wall_now());
+    }
+  }
+  if (!stop_ && !caught_interrupt()) supervision_->report(*engine_, "running", wall_now());
+  const std::string when = " at t = " + std::to_string(engine_->time()) + " s";
+  if (stop_) {
+    status_ = "stopped";
+    log("stopped from the dashboard" + when + ", step " + std::to_string(engine_->steps()));
+    return true;
+  }
+  if (caught_interrupt()) {
+    status_ = "interrupted", code_ = 130;
+    log("interrupted by signal " + std::to_string(caught_interrupt()) + when);
+    return true;
+  }
+  return false;
+}
+
+// Requests from the dashboard (dashboard/run_control.hpp): pause until resumed, stop, cadence.
+void RunDriver::take_requests() {
+  for (const ControlRequest& r : supervision_->requests([&](const std::string& l) { log(l); })) {
+    using A = ControlRequest::Action;
+    const std::string at = " at step " + std::to_string(engine_->steps());
+    if (r.action == A::Pause && !paused_) paused_ = true, log("paused" + at);
+    else if (r.action == A::Resume && paused_) paused_ = false, log("resumed" + at);
+    else if (r.action == A::Stop) stop_ = true;
+    if (r.action != A::Cadence) continue;
+    const double t = engine_->time(), shortest = cadence_floor(engine_->last_dt(), c_.end_time);
+    bool too_short = false;
+    for (double v : {r.monitor_interval, r.extract_interval, r.visualisation_interval}) too_short |= v > 0 && v < shortest;
+    if (too_short) {
+      log("output cadence: ignored a request for an interval under " + std::to_string(shortest) + " s");
+      continue;
+    }
+    if (r.monitor_interval > 0) dt_mon_ = r.monitor_interval, mon_.set_interval(dt_mon_, t);
+    if (r.extract_interval > 0) dt_ext_ = r.extract_interval, ext_.set_interval(dt_ext_, t);
+    if (r.visualisation_interval > 0) dt_vis_ = r.visualisation_interval, vis_.set_interval(dt_vis_, t);
+    supervision_->set_intervals(dt_mon_, dt_ext_, dt_vis_);
+    std::ostringstream l;
+    l << "output cadence: monitors every " << dt_mon_ << " s, extracts every " << dt_ext_ << " s, frames every " << dt_vis_ << " s";
+    log(l.str());
+  }
+}
+
+// The stages' monitors as the engine names them, then the two-phase monitors of the run.
+void RunDriver::monitor() {
+  std::vector<MonitorValue> row = engine_->monitors();
+  if (!two_phase_) return rd_->monitor(*engine_, row);
+  const bool before = two_phase_->percolation_time() >= 0;
+  const std::vector<std::string> names = two_phase_->columns();
+  const std::vector<double> values = two_phase_->sample(*engine_);
+  for (std::size_t k = 0; k < names.size(); ++k) row.push_back({names[k], values[k]});
+  rd_->monitor(*engine_, row);
+  if (!before && two_phase_->percolation_time() >= 0)
+    log("gas percolates (joins the inlet and outlet of the monitor region) at t = " +
+        std::to_string(two_phase_->percolation_time()) + " s, gas saturation " +
+        std::to_string(two_phase_->last().saturation_gas));
+}
+
+void RunDriver::checkpoint() {
+  if (engine_->steps() == last_checkpoint_step_) return;
+  last_checkpoint_step_ = engine_->steps();
+  try {
+    log("checkpoint " + rd_->save_checkpoint(*engine_, c_.name, c_.output.checkpoint_keep));
+  } catch (const std::exception& e) {
+    log(std::string("warning: no checkpoint: ") + e.what());
+  }
+}
+
+void RunDriver::finish() {
+  // An unstable or failed state is not saved: the last good checkpoint stays.
+  const bool cut_short = status_ == "interrupted" || status_ == "stopped";
+  if (status_ != "unstable" && status_ != "failed") monitor(), checkpoint();
+  if (extracts_ && cut_short) writer_->write(*engine_);
+  if (insitu_->active()) {
+    try {
+      if (cut_short) insitu_->output(*engine_);  // the state it stopped at, as a last frame
+      insitu_->finish();
+    } catch (const std::exception& e) {
+      log(std::string("warning: in-situ visualisation: ") + e.what());
+    }
+  }
+  const double wall = wall_now();
+  nlohmann::json j = summary(wall);
+  if (insitu_->active()) {
+    j["insitu"] = insitu_->stats(wall);
+    log(insitu_->report(wall));
+  }
+  rd_->write_summary(j);
+  supervision_->finish(*engine_, status_, diagnostic_, wall);
+  if (dashboard_) {
+    dashboard_->stop();  // after a last look at the run directory: its clients get the final state
+    log("dashboard closed; `poresph serve " + rd_->path() + "` shows the finished run");
+  }
+  log("run " + status_ + " after " + std::to_string(engine_->steps()) + " steps in " + seconds_text(wall) +
+      "; output in " + rd_->path());
+}
+
+nlohmann::json RunDriver::summary(double wall) const {
+  const double steps = double(engine_->steps());
+  nlohmann::json j = {{"case", c_.name},
+                      {"status", status_},
+                      {"backend", engine_->backend()},
+                      {"device", engine_->device()},
+                      {"precision", precision_name()},
+                      {"dimension", c_.scene.dimension},
+                      {"particles", engine_->particles()},
+                      {"steps", engine_->steps()},
+                      {"time", engine_->time()},
+                      {"end_time", c_.end_time},
+                      {"wall_seconds", wall},
+                      {"particle_steps_per_second", steps * engine_->particles() / std::max(wall, 1e-9)}};
+  if (two_phase_) {
+    const TwoPhaseSample& s = two_phase_->last();
+    const double tp = two_phase_->percolation_time();
+    j["two_phase"] = {{"percolation_time", tp >= 0 ? nlohmann::json(tp) : nlohmann::json(nullptr)},
+                      {"saturation_gas", s.saturation_gas},
+                      {"capillary_pressure", s.pressure_gas - s.pressure_liquid}};
+  }
+  return j;
+}
+
+}  // namespace psph

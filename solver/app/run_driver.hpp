@@ -1,0 +1,65 @@
+#pragma once
+// One run of a case: the engine (or a restart), the run directory, its outputs on their clocks
+// (monitors, extracts, frames, checkpoints), the dashboard's requests, and the summary at the end.
+#include <chrono>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "app/commands.hpp"
+#include "app/output_clock.hpp"
+#include "app/run_supervision.hpp"
+#include "catalyst/insitu_session.hpp"
+#include "dashboard/dashboard_server.hpp"
+#include "engine/engine.hpp"
+#include "io/particle_output.hpp"
+#include "io/run_directory.hpp"
+#include "monitors/two_phase.hpp"
+#include "scene/case_file.hpp"
+
+namespace psph {
+
+class RunDriver {
+ public:
+  RunDriver(Case& c, const RunOptions& opt) : c_(c), opt_(opt) {}
+  // The exit code of commands.hpp.
+  int run();
+
+ private:
+  using clock = std::chrono::steady_clock;
+  int open();           // engine, restart, in-situ session, run directory: 0 or 2 (nothing left behind)
+  void plan_outputs();  // extract fields, output intervals and clocks
+  int start();          // supervision, dashboard, the first outputs: 0 or an exit code
+  void loop();          // steps to the end, a stop or an interrupt
+  void outputs_due();
+  void progress_line();
+  bool controls();      // the dashboard's requests and a pause; true: leave the loop
+  void take_requests();
+  void monitor();
+  void checkpoint();
+  void finish();
+  nlohmann::json summary(double wall) const;
+  double wall_now() const { return std::chrono::duration<double>(clock::now() - t0_).count(); }
+  void log(const std::string& line) { rd_->log(line); }
+
+  Case& c_;
+  const RunOptions& opt_;
+  std::unique_ptr<Engine> engine_;
+  std::string restart_file_, dir_;
+  std::unique_ptr<InSituSession> insitu_;
+  std::unique_ptr<RunDirectory> rd_;
+  std::unique_ptr<ParticleWriter> writer_;
+  std::unique_ptr<TwoPhaseMonitor> two_phase_;
+  std::unique_ptr<RunSupervision> supervision_;
+  std::unique_ptr<DashboardServer> dashboard_;
+  bool extracts_ = false, paused_ = false, stop_ = false;
+  double dt_mon_ = 0, dt_vis_ = 0, dt_ext_ = 0;
+  OutputClock mon_{1, 0}, ext_{1, 0}, ck_{1, 0}, vis_{1, 0};
+  long last_checkpoint_step_ = -1;
+  clock::time_point t0_, last_print_;
+  std::string status_ = "completed", diagnostic_;
+  int code_ = 0;
+};
+
+}  // namespace psph

@@ -1,0 +1,85 @@
+// [[geometry]]: the shapes that place each material's particles, in order (a later shape takes the
+// particles of an earlier one where they overlap; "empty" removes them).
+#include "scene/case_tables.hpp"
+
+namespace psph {
+namespace {
+
+std::shared_ptr<const Shape> read_grain_pack(CaseReader& r, CaseDraft& d) {
+  GrainPackSpec p;
+  r.box(d.dimension(), p.lower, p.upper);
+  p.grain_radius = r.positive("grain_radius");
+  p.radius_spread = r.non_negative("radius_spread", 0.2);
+  if (p.radius_spread >= 1) r.fail("radius_spread", "expected a fraction of the radius in [0, 1)");
+  p.min_gap = r.non_negative("min_gap", 2 * d.c.scene.options.spacing);
+  p.solid_fraction = r.positive("solid_fraction");
+  if (p.solid_fraction > 0.9) r.fail("solid_fraction", "expected a fraction in (0, 0.9]");
+  const long seed = r.integer("seed", 1);
+  if (seed < 0) r.fail("seed", "expected an integer >= 0");
+  p.seed = static_cast<std::uint64_t>(seed);
+  try {
+    return make_grain_pack(p, generate_grain_pack(p, d.dimension()).grains, d.dimension());
+  } catch (const std::invalid_argument& e) {
+    r.fail("solid_fraction", e.what());
+  }
+}
+
+// The shape's own keys.
+std::shared_ptr<const Shape> read_shape(CaseReader& r, CaseDraft& d, const std::string& shape) {
+  const int D = d.dimension();
+  if (shape != "sphere" && r.has("layout"))
+    r.fail("layout", "expected a layout only on a sphere (boxes and grain packs take the lattice)");
+  if (shape == "grain_pack") return read_grain_pack(r, d);
+  if (shape == "box") {
+    Bounds b;
+    b.dimension = D;
+    b.lower = r.vec<double>("lower", D);
+    b.upper = r.vec<double>("upper", D);
+    return make_box(b);
+  }
+  const std::array<double, 3> centre = r.vec<double>("center", D);
+  const double radius = r.positive("radius");
+  // "lattice": the domain's lattice sites inside; "concentric": shells fitted to the surface.
+  const bool concentric = r.choice("layout", {"lattice", "concentric"}, "lattice") == "concentric";
+  return make_sphere(centre, radius, concentric, D);
+}
+
+// What fills the shape, and how it moves at the start.
+void read_filling(CaseReader& r, CaseDraft& d, GeometryShape& s, bool pack) {
+  const std::vector<SceneMaterial>& mats = d.c.scene.materials;
+  const std::string mname = r.string("material");
+  if (mname == "empty") s.material = -1;
+  else if (d.mat_index.count(mname)) s.material = d.mat_index.at(mname);
+  else r.fail("material", "expected \"empty\" or the name of a table under [materials], got \"" + mname + "\"");
+  const bool rigid = s.material >= 0 && mats[s.material].props.kind == MaterialKind::Rigid;
+  if (pack && rigid)
+    r.fail("material", "expected a box or a sphere for a rigid material (each geometry is one rigid body: a "
+                       "grain pack would move as one clump)");
+  s.velocity = r.vec<double>("velocity", d.dimension(), std::array<double, 3>{0, 0, 0});
+  // A rigid body's initial angular velocity (rad/s) about its centre of mass: a number in 2D
+  // (about z), a vector in 3D.
+  if (r.has("angular_velocity")) {
+    if (!rigid) r.fail("angular_velocity", "expected a geometry of a material with kind = \"rigid\" for it to apply to");
+    if (d.dimension() == 1) r.fail("angular_velocity", "expected no rotation in 1D");
+    if (d.dimension() == 2) s.angular_velocity[2] = r.number("angular_velocity");
+    else s.angular_velocity = r.vec<double>("angular_velocity", 3);
+  }
+}
+
+}  // namespace
+
+void read_geometry(CaseReader& top, CaseDraft& d) {
+  const toml::node* g = top.node("geometry");
+  if (!g) top.fail("geometry", "missing required array of tables [[geometry]]");
+  const toml::array* arr = g->as_array();
+  if (!arr || arr->empty() || !arr->is_array_of_tables()) top.fail("geometry", "expected an array of tables [[geometry]]", g);
+  top.each_table("geometry", arr->size(), "shapes", [&](CaseReader& r) {
+    GeometryShape s;
+    const std::string shape = r.choice("shape", {"box", "sphere", "grain_pack"});
+    s.shape = read_shape(r, d, shape);
+    read_filling(r, d, s, shape == "grain_pack");
+    d.c.geometry.push_back(s);
+  });
+}
+
+}  // namespace psph

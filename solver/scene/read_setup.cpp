@@ -1,0 +1,102 @@
+// The case tables that set up a run: [case], [domain], [discretisation], [time], [output],
+// [visualisation], [monitors].
+#include <cmath>
+
+#include "kernels/kernel.hpp"
+#include "scene/case_tables.hpp"
+
+namespace psph {
+namespace {
+
+KernelType kernel_from(const std::string& s) {
+  return s == "wendland_c2" ? KernelType::WendlandC2 : s == "quintic_spline" ? KernelType::QuinticSpline
+                                                                              : KernelType::CubicSpline;
+}
+
+}  // namespace
+
+void read_case_table(CaseReader& top, CaseDraft& d) {
+  CaseReader r(top.table("case", true), d.file, "case");
+  d.c.name = r.string("name");
+  if (d.c.name.empty() || d.c.name.find_first_of("/\\ \t") != std::string::npos)
+    r.fail("name", "expected a non-empty name without spaces or slashes");
+  d.c.description = r.string("description", "");
+  const long dim = r.integer("dimension");
+  if (dim < 1 || dim > 3) r.fail("dimension", "expected 1, 2 or 3, got " + std::to_string(dim));
+  d.c.scene.dimension = static_cast<int>(dim);
+  r.finish();
+}
+
+void read_domain(CaseReader& top, CaseDraft& d) {
+  Scene& sc = d.c.scene;
+  CaseReader r(top.table("domain", true), d.file, "domain");
+  r.box(d.dimension(), sc.lower, sc.upper);
+  sc.periodic = r.vec<bool>("periodic", d.dimension(), std::array<bool, 3>{false, false, false});
+  r.finish();
+}
+
+void read_discretisation(CaseReader& top, CaseDraft& d) {
+  Scene& sc = d.c.scene;
+  SolverOptions& o = sc.options;
+  const toml::table& t = top.table("discretisation", true);
+  d.note(t, "discretisation");
+  CaseReader r(t, d.file, "discretisation");
+  o.spacing = r.positive("spacing");
+  o.jitter = r.non_negative("jitter", 0.0);
+  if (o.jitter > 0.5) r.fail("jitter", "expected a fraction of the spacing in [0, 0.5]");
+  o.kernel = kernel_from(r.choice("kernel", {"cubic_spline", "wendland_c2", "quintic_spline"}, "cubic_spline"));
+  const bool has_R = r.has("support_radius"), has_h = r.has("smoothing_length");
+  if (has_R == has_h) r.fail("support_radius", "give exactly one of support_radius and smoothing_length");
+  o.support_radius = has_R ? r.positive("support_radius")
+                           : r.positive("smoothing_length") * support_per_smoothing_length(o.kernel);
+  if (o.support_radius < o.spacing)
+    r.fail(has_R ? "support_radius" : "smoothing_length", "expected a support radius of at least one spacing");
+  for (int k = 0; k < d.dimension(); ++k) {
+    const double cells = (sc.upper[k] - sc.lower[k]) / o.spacing;
+    if (sc.periodic[k] && std::fabs(cells - std::round(cells)) > 1e-6 * cells)
+      r.fail("spacing", "expected the periodic domain length along axis " + std::to_string(k) +
+                            " to be a whole number of spacings (got " + CaseReader::fmt(cells) + ")");
+    if (sc.periodic[k] && sc.upper[k] - sc.lower[k] < 3 * o.support_radius)
+      r.fail("support_radius", "periodic axis " + std::to_string(k) + " is shorter than 3 support radii");
+  }
+  r.finish();
+}
+
+void read_time_and_output(CaseReader& top, CaseDraft& d) {
+  Case& c = d.c;
+  {
+    CaseReader r(top.table("time", true), d.file, "time");
+    c.end_time = r.positive("end");
+    r.finish();
+  }
+  CaseReader r(top.table("output", false), d.file, "output");
+  c.output.monitor_interval = r.non_negative("monitor_interval", 0.0);
+  c.output.extract_interval = r.non_negative("extract_interval", 0.0);
+  c.output.checkpoint_interval = r.non_negative("checkpoint_interval", 0.0);
+  c.output.checkpoint_keep = static_cast<int>(r.positive_integer("checkpoint_keep", c.output.checkpoint_keep));
+  c.output.fields = r.strings("fields", c.output.fields);
+  r.finish();
+  c.visualisation = parse_visualisation(top.table("visualisation", false), d.file);
+}
+
+// The region and axis of the two-phase monitors (monitors/two_phase.hpp).
+void read_monitors(CaseReader& top, CaseDraft& d) {
+  const Scene& sc = d.c.scene;
+  const int D = d.dimension();
+  const toml::table& t = top.table("monitors", false);
+  d.note(t, "monitors");
+  CaseReader r(t, d.file, "monitors");
+  MonitorRegion& m = d.c.monitor_region;
+  m.lower = r.vec<double>("region_lower", D, sc.lower);
+  m.upper = r.vec<double>("region_upper", D, sc.upper);
+  for (int k = 0; k < D; ++k)
+    if (!(m.upper[k] > m.lower[k]) || m.lower[k] < sc.lower[k] || m.upper[k] > sc.upper[k])
+      r.fail("region_upper", "expected region_lower < region_upper inside the domain on every axis (axis " +
+                                 std::to_string(k) + ")");
+  m.flow_axis = r.axis("flow_axis", D, std::string(1, "xyz"[D - 1]));
+  // Lattice neighbours (1 and sqrt(2) spacings) connect; a one-particle water film (2) does not.
+  m.percolation_distance = r.positive("percolation_distance", 1.5 * sc.options.spacing);
+  r.finish();
+}
+
+}  // namespace psph

@@ -1,0 +1,44 @@
+#pragma once
+// The shapes of [[geometry]]: what a shape contains, its bounding box, and optionally the particles
+// it places itself (a body-fitted layout instead of the domain's lattice). scene/scene_builder.cpp
+// gives each lattice site the material of the last shape that contains it. A new shape (a
+// segmented image, say) is one new class here.
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "scene/concentric_layout.hpp"
+#include "scene/grain_pack.hpp"
+
+namespace psph {
+
+// An axis-aligned box [lower, upper] in `dimension` components.
+struct Bounds {
+  int dimension = 3;
+  std::array<double, 3> lower{0, 0, 0}, upper{0, 0, 0};
+  bool contains(const double* x) const {
+    for (int k = 0; k < dimension; ++k)
+      if (x[k] < lower[k] || x[k] > upper[k]) return false;
+    return true;
+  }
+};
+
+class Shape {
+ public:
+  virtual ~Shape() = default;
+  // x has the case's dimension of components.
+  virtual bool contains(const double* x) const = 0;
+  virtual Bounds bounds() const = 0;
+  // A shape with its own layout places its particles itself (points inside it, each with the
+  // volume it stands for); the others take the lattice sites they contain.
+  virtual bool places_points() const { return false; }
+  virtual std::vector<LayoutPoint> points(double /*spacing*/) const { return {}; }
+};
+
+std::shared_ptr<const Shape> make_box(const Bounds& box);
+// layout "concentric" (scene/concentric_layout.hpp) or the lattice.
+std::shared_ptr<const Shape> make_sphere(const std::array<double, 3>& centre, double radius, bool concentric,
+                                         int dimension);
+std::shared_ptr<const Shape> make_grain_pack(const GrainPackSpec& spec, std::vector<Grain> grains, int dimension);
+
+}  // namespace psph

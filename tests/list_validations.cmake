@@ -1,0 +1,21 @@
+# Writes OUT: one CTest test per validation case that `poresph validate --list` names, so that a
+# new validation runs in CI without a line here (included through TEST_INCLUDE_FILES).
+execute_process(COMMAND ${PORESPH} validate --list OUTPUT_VARIABLE listing RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "poresph validate --list failed (${rc})")
+endif()
+string(REPLACE "\n" ";" lines "${listing}")
+set(text "")
+foreach(line IN LISTS lines)
+  if(line STREQUAL "")
+    continue()
+  endif()
+  string(REGEX REPLACE "\t.*" "" name "${line}")
+  string(APPEND text "add_test(validate_${name} \"${PORESPH}\" validate ${name})\n"
+                     "set_tests_properties(validate_${name} PROPERTIES LABELS validation ENVIRONMENT OMP_NUM_THREADS=1)\n")
+endforeach()
+if(text STREQUAL "")
+  message(FATAL_ERROR "poresph validate --list named no validation case")
+endif()
+file(WRITE ${OUT}.tmp "${text}")
+file(RENAME ${OUT}.tmp ${OUT})
