@@ -17,6 +17,7 @@
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
+#include "stage/pass_context.hpp"
 
 namespace psph {
 
@@ -41,17 +42,14 @@ PSPH_HD inline bool extrapolate_fluid_pressure(const NeighbourList<D>& nb, const
 
 template <int D>
 struct WallPressurePass {
-  NeighbourList<D> nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  FluidTable<D> mats;
+  PairContext<D> c;  // lists, kernel, particles, materials
   PSPH_HD void operator()(int i) const {
-    const int mi = s.material[i];
-    if (mats[mi].kind != MaterialKind::Wall) return;
-    Real p = mats[mi].background_pressure;
-    if (s.near_fluid[i]) extrapolate_fluid_pressure(nb, kern, s, mats, i, Vec<D>::zero(), p);
-    s.p[i] = p;
-    s.rho[i] = density_from_pressure(mats[mi], p, s.rho0[i]);
+    const int mi = c.s.material[i];
+    if (c.mats[mi].kind != MaterialKind::Wall) return;
+    Real p = c.mats[mi].background_pressure;
+    if (c.s.near_fluid[i]) extrapolate_fluid_pressure(c.nb, c.kern, c.s, c.mats, i, Vec<D>::zero(), p);
+    c.s.p[i] = p;
+    c.s.rho[i] = density_from_pressure(c.mats[mi], p, c.s.rho0[i]);
   }
 };
 

@@ -19,6 +19,7 @@
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
+#include "stage/pass_context.hpp"
 
 namespace psph {
 
@@ -26,29 +27,26 @@ enum class WallNoSlip { Prescribed = 0, Mirror = 1, Curved = 2, FreeSlip = 3 };
 
 template <int D>
 struct WallVelocityPass {
-  NeighbourList<D> nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  MaterialTable<D> mats;
+  PairContext<D> c;  // lists, kernel, particles, materials
   WallNoSlip mode;
   PSPH_HD void operator()(int i) const {
-    if (mats.is_fluid(s.material[i])) return;
-    if (mode == WallNoSlip::Prescribed || !s.near_fluid[i]) {
-      s.v_noslip[i] = s.v[i];
+    if (c.mats.is_fluid(c.s.material[i])) return;
+    if (mode == WallNoSlip::Prescribed || !c.s.near_fluid[i]) {
+      c.s.v_noslip[i] = c.s.v[i];
       return;
     }
-    const Vec<D> normal = mode == WallNoSlip::Curved ? wall_normal_towards_fluid(nb, kern, i) : Vec<D>::zero();
+    const Vec<D> normal = mode == WallNoSlip::Curved ? wall_normal_towards_fluid(c.nb, c.kern, i) : Vec<D>::zero();
     Vec<D> sum = Vec<D>::zero();
     Real wsum = 0;
-    nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
-      const Real w = kern.W(r);
+    c.nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
+      const Real w = c.kern.W(r);
       const Real dn = dot(rij, normal);
-      sum += (s.v[j] - s.lap_v[j] * (Real(0.25) * dn * dn)) * w;
+      sum += (c.s.v[j] - c.s.lap_v[j] * (Real(0.25) * dn * dn)) * w;
       wsum += w;
     });
-    if (!(wsum > Real(0))) s.v_noslip[i] = s.v[i];
-    else if (mode == WallNoSlip::FreeSlip) s.v_noslip[i] = sum * (Real(1) / wsum);
-    else s.v_noslip[i] = s.v[i] * Real(2) - sum * (Real(1) / wsum);
+    if (!(wsum > Real(0))) c.s.v_noslip[i] = c.s.v[i];
+    else if (mode == WallNoSlip::FreeSlip) c.s.v_noslip[i] = sum * (Real(1) / wsum);
+    else c.s.v_noslip[i] = c.s.v[i] * Real(2) - sum * (Real(1) / wsum);
   }
 };
 

@@ -8,41 +8,39 @@
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
+#include "stage/pass_context.hpp"
 
 namespace psph {
 
 template <int D>
 struct ContinuityPass {
-  NeighbourList<D> nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  MaterialTable<D> mats;
+  PairContext<D> c;  // lists, kernel, particles, materials
   Real density_diffusion;  // delta (0 = off)
   Real smoothing_length;
   bool walls;              // integrate wall densities too (false when walls take the fluid's pressure)
   PSPH_HD void operator()(int i) const {
-    const int mi = s.material[i];
-    const bool fluid_i = mats.is_fluid(mi);
-    const Vec<D> v_i = s.v[i];
-    const Real rho_i = s.rho[i];
-    if (!fluid_i && (!walls || !s.near_fluid[i] || mats.is_solid(mi))) {
-      s.drho[i] = Real(0);
+    const int mi = c.s.material[i];
+    const bool fluid_i = c.mats.is_fluid(mi);
+    const Vec<D> v_i = c.s.v[i];
+    const Real rho_i = c.s.rho[i];
+    if (!fluid_i && (!walls || !c.s.near_fluid[i] || c.mats.is_solid(mi))) {
+      c.s.drho[i] = Real(0);
       return;
     }
     Real div = 0, diffusion = 0;
     auto pair = [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
       if (!(r > Real(0))) return;
-      const Real F = kern.F(r);
-      const Real V_j = mats.volume_of(s, j);
-      div += V_j * dot(v_i - s.v[j], rij) * F;  // eq. 53a
+      const Real F = c.kern.F(r);
+      const Real V_j = c.mats.volume_of(c.s, j);
+      div += V_j * dot(v_i - c.s.v[j], rij) * F;  // eq. 53a
       // delta-SPH: 2 delta h_s c sum_j V_j (rho_j - rho_i) (r_ji . grad_i W_ij) / r^2 over fluid
       // pairs (Molteni & Colagrossi 2009, Comput. Phys. Commun. 180:861, eq. 7).
-      if (density_diffusion > Real(0) && fluid_i && mats.is_fluid(s.material[j]))
-        diffusion -= Real(2) * V_j * (s.rho[j] - rho_i) * F;
+      if (density_diffusion > Real(0) && fluid_i && c.mats.is_fluid(c.s.material[j]))
+        diffusion -= Real(2) * V_j * (c.s.rho[j] - rho_i) * F;
     };
-    if (fluid_i) nb.for_each(i, pair);
-    else nb.for_each_fluid(i, pair);  // a wall's density answers the fluid only
-    s.drho[i] = rho_i * div + density_diffusion * smoothing_length * mats[mi].sound_speed * diffusion;
+    if (fluid_i) c.nb.for_each(i, pair);
+    else c.nb.for_each_fluid(i, pair);  // a wall's density answers the fluid only
+    c.s.drho[i] = rho_i * div + density_diffusion * smoothing_length * c.mats[mi].sound_speed * diffusion;
   }
 };
 

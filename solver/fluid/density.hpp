@@ -7,6 +7,7 @@
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
+#include "stage/pass_context.hpp"
 
 namespace psph {
 
@@ -34,36 +35,33 @@ struct NumberDensityPass {
 // with the density of their buffer's pressure (boundary/open_boundary.hpp).
 template <int D>
 struct DensitySummationPass {
-  NeighbourList<D> nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  FluidTable<D> mats;
+  PairContext<D> c;  // lists, kernel, particles, materials
   bool normalised;
   bool number;         // eq. 40 form
   bool all_particles;  // false: walls far from any fluid keep their density and pressure
   bool solids;         // the case has elastic or rigid solids
   PSPH_HD void operator()(int i) const {
-    if (!all_particles && !s.near_fluid[i]) return;
-    if (solids && mats.is_solid(s.material[i])) return;  // a solid keeps its own density
-    const Real w0 = kern.W(Real(0));
-    const Real m_i = s.m[i];
+    if (!all_particles && !c.s.near_fluid[i]) return;
+    if (solids && c.mats.is_solid(c.s.material[i])) return;  // a solid keeps its own density
+    const Real w0 = c.kern.W(Real(0));
+    const Real m_i = c.s.m[i];
     Real num = m_i * w0;
-    Real den = normalised ? w0 / s.number_density[i] : Real(1);
-    const bool open = mats.open.active();
-    nb.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
-      const Real w = kern.W(r);
-      const Real ratio = open ? buffer_density_ratio(mats, s.material[j], s.x[j], s.rho0[j]) : Real(1);
+    Real den = normalised ? w0 / c.s.number_density[i] : Real(1);
+    const bool open = c.mats.open.active();
+    c.nb.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
+      const Real w = c.kern.W(r);
+      const Real ratio = open ? buffer_density_ratio(c.mats, c.s.material[j], c.s.x[j], c.s.rho0[j]) : Real(1);
       // A solid neighbour fills its volume with i's rest density (no deficit at the interface,
       // whatever the solid's own density).
       const Real m_j = number                                  ? m_i
-                       : solids && mats.is_solid(s.material[j]) ? s.rho[i] * mats.volume_of(s, j)
-                                                                : s.m[j];
+                       : solids && c.mats.is_solid(c.s.material[j]) ? c.s.rho[i] * c.mats.volume_of(c.s, j)
+                                                                : c.s.m[j];
       num += m_j * w * ratio;
-      if (normalised) den += w / s.number_density[j];
+      if (normalised) den += w / c.s.number_density[j];
     });
     const Real rho = num / den;
-    s.rho[i] = rho;
-    s.p[i] = pressure_from_density(mats[s.material[i]], rho, s.rho0[i]);
+    c.s.rho[i] = rho;
+    c.s.p[i] = pressure_from_density(c.mats[c.s.material[i]], rho, c.s.rho0[i]);
   }
 };
 

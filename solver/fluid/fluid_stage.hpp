@@ -64,25 +64,25 @@ class FluidStage {
     const bool normalised = o_.density == DensityMethod::NormalisedSummation;
     const bool number = o_.density == DensityMethod::NumberSummation;
     if (normalised) B::for_each(cx.n(), NumberDensityPass<D>{cx.list(), cx.kern, cx.view(), all_particles});
-    B::for_each(cx.n(), DensitySummationPass<D>{cx.list(), cx.kern, cx.view(), cx.mats, normalised, number,
+    B::for_each(cx.n(), DensitySummationPass<D>{cx.pairs(), normalised, number,
                                                 all_particles, cx.solids()});
   }
   // d rho/dt with the velocity that drifts the particles (fluid/continuity.hpp).
   void density_rate(StepContext<D, B>& cx) const {
     if (!cx.continuity) return;
-    B::for_each(cx.n(), ContinuityPass<D>{cx.list(), cx.kern, cx.view(), cx.mats, Real(o_.density_diffusion),
+    B::for_each(cx.n(), ContinuityPass<D>{cx.pairs(), Real(o_.density_diffusion),
                                           Real(cx.smoothing_length), o_.wall_pressure == WallPressure::Summation});
   }
 
   // Walls and solids present a pressure and a no-slip velocity (boundary/, solid/fluid_coupling.hpp).
   void present_walls(StepContext<D, B>& cx) const {
     if (cx.walls && o_.wall_pressure == WallPressure::Extrapolated)
-      B::for_each(cx.n(), WallPressurePass<D>{cx.list(), cx.kern, cx.view(), cx.mats});
+      B::for_each(cx.n(), WallPressurePass<D>{cx.pairs()});
     if (cx.walls || cx.solids())
-      B::for_each(cx.n(), WallVelocityPass<D>{cx.list(), cx.kern, cx.view(), cx.mats, o_.wall_noslip});
+      B::for_each(cx.n(), WallVelocityPass<D>{cx.pairs(), o_.wall_noslip});
   }
   void forces(StepContext<D, B>& cx) const {
-    B::for_each(cx.n(), FluidForcePass<D>{cx.list(), cx.kern, cx.view(), cx.mats, fo_});
+    B::for_each(cx.n(), FluidForcePass<D>{cx.pairs(), fo_});
   }
 
   // v <- (I - dt L)^-1 v on the fluid (fluid/viscosity.hpp), L at the current positions with the
@@ -94,7 +94,7 @@ class FluidStage {
     for (auto* a : {&visc_b_, &visc_x_}) a->resize(n);
     const bool normalise = o_.laplacian_correction != LaplacianCorrection::None;
     auto op = [&](const Vec<D>* in, Vec<D>* out, bool walls) {
-      B::for_each(n, ImplicitViscosityOperator<D>{cx.list(), cx.kern, v, cx.mats, normalise, Real(dt), in, out, walls});
+      B::for_each(n, ImplicitViscosityOperator<D>{cx.pairs(), normalise, Real(dt), in, out, walls});
     };
     visc_x_.zero();
     op(visc_x_.data(), visc_b_.data(), true);  // A(0): the walls' part

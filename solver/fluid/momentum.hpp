@@ -9,6 +9,7 @@
 #include "kernels/laplacian_correction.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
+#include "stage/pass_context.hpp"
 
 namespace psph {
 
@@ -77,21 +78,18 @@ PSPH_HD PSPH_PAIR inline FluidPairTerms<D> fluid_pair_terms(const FluidParticle<
 
 template <int D>
 struct FluidForcePass {
-  NeighbourList<D> nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  FluidTable<D> mats;
+  PairContext<D> c;  // lists, kernel, particles, materials
   FluidForceOptions opt;
 
   PSPH_HD void operator()(int i) const {
-    const int mi = s.material[i];
-    if (!mats.moves_freely(mi, s.x[i])) {  // walls, open-boundary buffers and solids
-      if (!mats.is_elastic(mi)) s.a[i] = Vec<D>::zero();  // an elastic solid's comes from solid/
-      s.v_xsph[i] = Vec<D>::zero();
-      s.lap_v[i] = Vec<D>::zero();  // none for walls and buffers (a recycled one kept the outlet's)
+    const int mi = c.s.material[i];
+    if (!c.mats.moves_freely(mi, c.s.x[i])) {  // walls, open-boundary buffers and solids
+      if (!c.mats.is_elastic(mi)) c.s.a[i] = Vec<D>::zero();  // an elastic solid's comes from solid/
+      c.s.v_xsph[i] = Vec<D>::zero();
+      c.s.lap_v[i] = Vec<D>::zero();  // none for walls and buffers (a recycled one kept the outlet's)
       return;
     }
-    const FluidParticle<D> fi(s, mats, i);
+    const FluidParticle<D> fi(c.s, c.mats, i);
     Vec<D> acc = Vec<D>::zero(), visc = Vec<D>::zero(), xs = Vec<D>::zero();
     // lambda_i = -sum_j V_j r_ij^2 F_ij is D in the continuum; on a lattice with support = 2
     // spacings it is 1.013 D (2D) and 1.020 D (3D), the relative error of the Morris Laplacian
@@ -99,42 +97,42 @@ struct FluidForcePass {
     // fields on cubic lattices; the tensor form also on sheared ones (kernels/laplacian_correction.hpp).
     Real lambda = 0;
     ContactLineSum<D> contact;
-    const bool contact_line = opt.surface_tension > Real(0) && opt.contact_line_force && nb.lists_non_fluid(i);
-    const Real colour_i = contact_line ? s.colour[i] : Real(0);
+    const bool contact_line = opt.surface_tension > Real(0) && opt.contact_line_force && c.nb.lists_non_fluid(i);
+    const Real colour_i = contact_line ? c.s.colour[i] : Real(0);
 
     Mat<D> A = Mat<D>::identity();
     bool tensor = opt.laplacian == LaplacianCorrection::Tensor;
     if (tensor) {
       LaplacianTensor<D> lt;
-      nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
-        if (r > Real(0)) lt.add(s.m[j] / s.rho[j], kern.F(r), rij);
+      c.nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
+        if (r > Real(0)) lt.add(c.s.m[j] / c.s.rho[j], c.kern.F(r), rij);
       });
       tensor = lt.solve(A);  // a degenerate neighbourhood falls back to the trace form
     }
-    nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
+    c.nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
       if (!(r > Real(0))) return;  // coincident particles exert no pair force (avoids 0/0)
-      const int mj = s.material[j];
-      const Real V_j = mats.volume_of(s, j);
-      const Real dw_r = kern.F(r);  // grad_i W_ij = r_ij F_ij
-      const bool fluid_j = mats.is_fluid(mj);
-      const FluidPairTerms<D> t = fluid_pair_terms(fi, s, mats, opt, j, rij, r, dw_r, V_j);
+      const int mj = c.s.material[j];
+      const Real V_j = c.mats.volume_of(c.s, j);
+      const Real dw_r = c.kern.F(r);  // grad_i W_ij = r_ij F_ij
+      const bool fluid_j = c.mats.is_fluid(mj);
+      const FluidPairTerms<D> t = fluid_pair_terms(fi, c.s, c.mats, opt, j, rij, r, dw_r, V_j);
       acc += t.pressure + t.artificial;
       visc += tensor ? t.viscous * LaplacianTensor<D>::weight(A, rij) : t.viscous;
       lambda -= V_j * r * r * dw_r;
       // XSPH over the same material, with the kernel factor W_ij that eq. 76 misses.
-      if (opt.xsph > Real(0) && mj == mi) xs -= (fi.v - s.v[j]) * (Real(2) * s.m[j] / (fi.rho + s.rho[j]) * kern.W(r));
-      if (contact_line && !fluid_j) contact.add(V_j, rij, dw_r, kern.W(r), mats[mj].colour);
-      if (contact_line && fluid_j) contact.add_fluid(V_j, rij, dw_r, s.colour[j] - colour_i);
+      if (opt.xsph > Real(0) && mj == mi) xs -= (fi.v - c.s.v[j]) * (Real(2) * c.s.m[j] / (fi.rho + c.s.rho[j]) * c.kern.W(r));
+      if (contact_line && !fluid_j) contact.add(V_j, rij, dw_r, c.kern.W(r), c.mats[mj].colour);
+      if (contact_line && fluid_j) contact.add_fluid(V_j, rij, dw_r, c.s.colour[j] - colour_i);
     });
 
     const Real scale = !tensor && opt.laplacian != LaplacianCorrection::None && lambda > Real(0) ? Real(D) / lambda : Real(1);
     visc *= scale;
-    if (s.visc_scale) s.visc_scale[i] = scale;
-    if (opt.surface_tension > Real(0)) acc += surface_tension_acceleration(s, i, opt.surface_tension);
-    if (contact_line) acc += contact.acceleration(s.colour_gradient[i], opt.surface_tension, fi.rho);
-    s.a[i] = acc + (opt.viscosity ? visc : Vec<D>::zero()) + mats.body_force_at(mi, s.x[i]);
-    s.lap_v[i] = fi.mu > Real(0) ? visc * (fi.rho / fi.mu) : Vec<D>::zero();
-    s.v_xsph[i] = xs * opt.xsph;
+    if (c.s.visc_scale) c.s.visc_scale[i] = scale;
+    if (opt.surface_tension > Real(0)) acc += surface_tension_acceleration(c.s, i, opt.surface_tension);
+    if (contact_line) acc += contact.acceleration(c.s.colour_gradient[i], opt.surface_tension, fi.rho);
+    c.s.a[i] = acc + (opt.viscosity ? visc : Vec<D>::zero()) + c.mats.body_force_at(mi, c.s.x[i]);
+    c.s.lap_v[i] = fi.mu > Real(0) ? visc * (fi.rho / fi.mu) : Vec<D>::zero();
+    c.s.v_xsph[i] = xs * opt.xsph;
   }
 };
 

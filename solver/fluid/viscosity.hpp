@@ -6,6 +6,7 @@
 #include "kernels/laplacian_correction.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
+#include "stage/pass_context.hpp"
 
 namespace psph {
 
@@ -24,36 +25,33 @@ PSPH_HD inline Real viscous_pair_coefficient(Real mu_i, Real mu_j, Real V_j, Rea
 // they present zero, which makes the map linear.
 template <int D>
 struct ImplicitViscosityOperator {
-  NeighbourList<D> nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  FluidTable<D> mats;
+  PairContext<D> c;  // lists, kernel, particles, materials
   bool normalise;  // trace-normalised Laplacian (kernels/laplacian_correction.hpp)
   Real dt;
   const Vec<D>* in;
   Vec<D>* out;
   bool walls;
   PSPH_HD void operator()(int i) const {
-    const int mi = s.material[i];
-    if (!mats.moves_freely(mi, s.x[i])) {
+    const int mi = c.s.material[i];
+    if (!c.mats.moves_freely(mi, c.s.x[i])) {
       out[i] = Vec<D>::zero();
       return;
     }
-    const Real mu_i = mats[mi].viscosity, inv_rho_i = Real(1) / s.rho[i];
+    const Real mu_i = c.mats[mi].viscosity, inv_rho_i = Real(1) / c.s.rho[i];
     const Vec<D> u_i = in[i];
     Vec<D> lap = Vec<D>::zero();
     Real lambda = 0;
-    nb.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
+    c.nb.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
       if (!(r > Real(0))) return;
-      const int mj = s.material[j];
-      const bool fluid_j = mats.is_fluid(mj);
-      const Real V_j = s.m[j] / s.rho[j], F = kern.F(r);
+      const int mj = c.s.material[j];
+      const bool fluid_j = c.mats.is_fluid(mj);
+      const Real V_j = c.s.m[j] / c.s.rho[j], F = c.kern.F(r);
       // Walls present their no-slip velocity, open-boundary buffers their imposed one.
-      const Vec<D> u_j = mats.moves_freely(mj, s.x[j]) ? in[j]
+      const Vec<D> u_j = c.mats.moves_freely(mj, c.s.x[j]) ? in[j]
                          : !walls                      ? Vec<D>::zero()
-                         : fluid_j                     ? s.v[j]
-                                                       : s.v_noslip[j];
-      lap += (u_i - u_j) * viscous_pair_coefficient(mu_i, fluid_j ? mats[mj].viscosity : mu_i, V_j, inv_rho_i, F);
+                         : fluid_j                     ? c.s.v[j]
+                                                       : c.s.v_noslip[j];
+      lap += (u_i - u_j) * viscous_pair_coefficient(mu_i, fluid_j ? c.mats[mj].viscosity : mu_i, V_j, inv_rho_i, F);
       lambda -= V_j * r * r * F;
     });
     if (normalise && lambda > Real(0)) lap *= Real(D) / lambda;

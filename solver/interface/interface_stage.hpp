@@ -30,21 +30,20 @@ class InterfaceStage {
   void curvature(StepContext<D, B>& cx) const {
     if (!active()) return;
     const int n = cx.n();
-    const ParticleView<D> v = cx.view();
-    const auto nb = cx.list();
+    const PairContext<D> pc = cx.pairs();
     if (o_.geometric_wetting && cx.walls) {
-      B::for_each(n, ColourPass<D>{nb, cx.kern, v, cx.mats, WallColour::FluidOnly});
-      B::for_each(n, NormalPass<D>{nb, cx.kern, v, cx.mats, WallColour::FluidOnly});
+      B::for_each(n, ColourPass<D>{pc, WallColour::FluidOnly});
+      B::for_each(n, NormalPass<D>{pc, WallColour::FluidOnly});
       for (int k = 0; k < 2; ++k) {
-        B::for_each(n, WallWettingPass<D>{nb, cx.kern, v, cx.mats});
-        B::for_each(n, ColourPass<D>{nb, cx.kern, v, cx.mats, WallColour::NearWallsAgain});
-        B::for_each(n, NormalPass<D>{nb, cx.kern, v, cx.mats, WallColour::NearWallsAgain});
+        B::for_each(n, WallWettingPass<D>{pc});
+        B::for_each(n, ColourPass<D>{pc, WallColour::NearWallsAgain});
+        B::for_each(n, NormalPass<D>{pc, WallColour::NearWallsAgain});
       }
     } else {
-      B::for_each(n, ColourPass<D>{nb, cx.kern, v, cx.mats, WallColour::Constant});
-      B::for_each(n, NormalPass<D>{nb, cx.kern, v, cx.mats, WallColour::Constant});
+      B::for_each(n, ColourPass<D>{pc, WallColour::Constant});
+      B::for_each(n, NormalPass<D>{pc, WallColour::Constant});
     }
-    B::for_each(n, CurvaturePass<D>{nb, cx.kern, v, cx.mats, Real(o_.normal_threshold / cx.smoothing_length),
+    B::for_each(n, CurvaturePass<D>{pc, Real(o_.normal_threshold / cx.smoothing_length),
                                     o_.geometric_wetting});
   }
 

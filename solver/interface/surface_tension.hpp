@@ -20,6 +20,7 @@
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
+#include "stage/pass_context.hpp"
 
 namespace psph {
 
@@ -38,52 +39,46 @@ PSPH_HD inline bool colour_pass_skips(const NeighbourList<D>& nb, WallColour wal
 
 template <int D>
 struct ColourPass {
-  NeighbourList<D> nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  MaterialTable<D> mats;
+  PairContext<D> c;  // lists, kernel, particles, materials
   WallColour walls;
   PSPH_HD void operator()(int i) const {
-    const int mi = s.material[i];
-    if (colour_pass_skips(nb, walls, mats.is_fluid(mi), i)) return;
-    if (!mats.is_fluid(mi)) {
-      if (walls == WallColour::Constant) s.colour[i] = mats[mi].colour;
+    const int mi = c.s.material[i];
+    if (colour_pass_skips(c.nb, walls, c.mats.is_fluid(mi), i)) return;
+    if (!c.mats.is_fluid(mi)) {
+      if (walls == WallColour::Constant) c.s.colour[i] = c.mats[mi].colour;
       return;
     }
-    const Real w0 = kern.W(Real(0)) * s.m[i] / s.rho[i];
-    Real num = w0 * mats[mi].colour, den = w0;
+    const Real w0 = c.kern.W(Real(0)) * c.s.m[i] / c.s.rho[i];
+    Real num = w0 * c.mats[mi].colour, den = w0;
     auto add = [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
-      const Real vw = s.m[j] / s.rho[j] * kern.W(r);
-      const int mj = s.material[j];  // walls: cos(theta), or their extrapolated colour
-      num += vw * (walls == WallColour::NearWallsAgain && !mats.is_fluid(mj) ? s.colour[j] : mats[mj].colour);
+      const Real vw = c.s.m[j] / c.s.rho[j] * c.kern.W(r);
+      const int mj = c.s.material[j];  // walls: cos(theta), or their extrapolated colour
+      num += vw * (walls == WallColour::NearWallsAgain && !c.mats.is_fluid(mj) ? c.s.colour[j] : c.mats[mj].colour);
       den += vw;
     };
-    if (walls == WallColour::FluidOnly) nb.for_each_fluid(i, add);
-    else nb.for_each(i, add);
-    s.colour[i] = num / den;
+    if (walls == WallColour::FluidOnly) c.nb.for_each_fluid(i, add);
+    else c.nb.for_each(i, add);
+    c.s.colour[i] = num / den;
   }
 };
 
 template <int D>
 struct NormalPass {
-  NeighbourList<D> nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  MaterialTable<D> mats;
+  PairContext<D> c;  // lists, kernel, particles, materials
   WallColour walls;
   PSPH_HD void operator()(int i) const {
-    const bool fluid = mats.is_fluid(s.material[i]);
-    if (colour_pass_skips(nb, walls, fluid, i)) return;
+    const bool fluid = c.mats.is_fluid(c.s.material[i]);
+    if (colour_pass_skips(c.nb, walls, fluid, i)) return;
     Vec<D> n = Vec<D>::zero();
     if (fluid) {
-      const Real c_i = s.colour[i];
+      const Real c_i = c.s.colour[i];
       auto add = [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
-        if (r > Real(0)) n += rij * (s.m[j] / s.rho[j] * (s.colour[j] - c_i) * kern.F(r));
+        if (r > Real(0)) n += rij * (c.s.m[j] / c.s.rho[j] * (c.s.colour[j] - c_i) * c.kern.F(r));
       };
-      if (walls == WallColour::FluidOnly) nb.for_each_fluid(i, add);
-      else nb.for_each(i, add);
+      if (walls == WallColour::FluidOnly) c.nb.for_each_fluid(i, add);
+      else c.nb.for_each(i, add);
     }
-    s.colour_gradient[i] = n;
+    c.s.colour_gradient[i] = n;
   }
 };
 
@@ -134,37 +129,34 @@ PSPH_HD inline Vec<D> reliable_unit_normal(const Vec<D>& n, Real threshold) {
 
 template <int D>
 struct CurvaturePass {
-  NeighbourList<D> nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  MaterialTable<D> mats;
+  PairContext<D> c;  // lists, kernel, particles, materials
   Real threshold;  // eps / h_s
   bool walls_extend_colour;  // geometric wetting: the colour near walls still measures the distance
   PSPH_HD void operator()(int i) const {
     Real kappa = 0;
-    const Vec<D> u_i = reliable_unit_normal(s.colour_gradient[i], threshold);
-    if (mats.is_fluid(s.material[i]) && norm2(u_i) > Real(0)) {
-      const Real w0 = kern.W(Real(0)) * s.m[i] / s.rho[i];
+    const Vec<D> u_i = reliable_unit_normal(c.s.colour_gradient[i], threshold);
+    if (c.mats.is_fluid(c.s.material[i]) && norm2(u_i) > Real(0)) {
+      const Real w0 = c.kern.W(Real(0)) * c.s.m[i] / c.s.rho[i];
       Real div = 0, cover = w0, shepard = w0, m2 = 0;
       bool wall = false;
-      nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
-        const Real V_j = s.m[j] / s.rho[j];
-        const Real vw = V_j * kern.W(r);
+      c.nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
+        const Real V_j = c.s.m[j] / c.s.rho[j];
+        const Real vw = V_j * c.kern.W(r);
         shepard += vw;  // all neighbours, walls included: the kernel's second moment
         m2 += vw * r * r;
-        wall |= !mats.is_fluid(s.material[j]);
+        wall |= !c.mats.is_fluid(c.s.material[j]);
         if (!(r > Real(0))) return;
-        const Vec<D> u_j = reliable_unit_normal(s.colour_gradient[j], threshold);
+        const Vec<D> u_j = reliable_unit_normal(c.s.colour_gradient[j], threshold);
         if (!(norm2(u_j) > Real(0))) return;
-        div += V_j * dot(u_j - u_i, rij) * kern.F(r);
+        div += V_j * dot(u_j - u_i, rij) * c.kern.F(r);
         cover += vw;
       });
       // Within a wall's reach a constant wall colour cos(theta) mixes in and the colour no longer
       // measures the distance to the interface: the particle's own curvature is kept there.
       kappa = wall && !walls_extend_colour ? -div / cover
-                                           : interface_curvature<D>(-div / cover, s.colour[i], m2 / (Real(D) * shepard));
+                                           : interface_curvature<D>(-div / cover, c.s.colour[i], m2 / (Real(D) * shepard));
     }
-    s.curvature[i] = kappa;
+    c.s.curvature[i] = kappa;
   }
 };
 

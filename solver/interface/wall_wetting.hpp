@@ -17,37 +17,35 @@
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
+#include "stage/pass_context.hpp"
 
 namespace psph {
 
 template <int D>
 struct WallWettingPass {
-  NeighbourList<D> nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  MaterialTable<D> mats;
+  PairContext<D> c;  // lists, kernel, particles, materials
   PSPH_HD void operator()(int i) const {
-    const int mi = s.material[i];
-    if (mats.is_fluid(mi) || !s.near_fluid[i]) return;
-    const Vec<D> n_w = wall_normal_towards_fluid(nb, kern, i);
-    const Real cos_t = mats[mi].colour;
+    const int mi = c.s.material[i];
+    if (c.mats.is_fluid(mi) || !c.s.near_fluid[i]) return;
+    const Vec<D> n_w = wall_normal_towards_fluid(c.nb, c.kern, i);
+    const Real cos_t = c.mats[mi].colour;
     const Real sin_t = sqrt(Real(1) - cos_t * cos_t);
     const Real cot_t = cos_t / (sin_t > Real(1e-3) ? sin_t : Real(1e-3));  // 0 and 180 degrees: the clamp below decides
-    Real c = 0, wsum = 0;
+    Real colour = 0, wsum = 0;
     Vec<D> g_sum = Vec<D>::zero();
-    nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
-      const Real w = kern.W(r);
-      const Vec<D> n_f = s.colour_gradient[j];
+    c.nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
+      const Real w = c.kern.W(r);
+      const Vec<D> n_f = c.s.colour_gradient[j];
       const Vec<D> t_f = n_f - n_w * dot(n_f, n_w);
       const Vec<D> g = t_f - n_w * (norm(t_f) * cot_t);
-      c += (s.colour[j] + dot(rij, g)) * w;  // rij = x_w - x_f
+      colour += (c.s.colour[j] + dot(rij, g)) * w;  // rij = x_w - x_f
       g_sum += g * w;
       wsum += w;
     });
     if (!(wsum > Real(0))) return;
-    c /= wsum;
-    s.colour[i] = c > Real(1) ? Real(1) : c < Real(-1) ? Real(-1) : c;
-    s.colour_gradient[i] = g_sum * (Real(1) / wsum);
+    colour /= wsum;
+    c.s.colour[i] = colour > Real(1) ? Real(1) : colour < Real(-1) ? Real(-1) : colour;
+    c.s.colour_gradient[i] = g_sum * (Real(1) / wsum);
   }
 };
 

@@ -23,12 +23,12 @@ class CouplingStage {
   }
 
   void present_solids(StepContext<D, B>& cx) const {
-    if (active_) B::for_each(cx.n(), SolidInterfacePressurePass<D>{cx.list(), cx.kern, cx.view(), cx.mats, mode_});
+    if (active_) B::for_each(cx.n(), SolidInterfacePressurePass<D>{cx.pairs(), mode_});
   }
   // `fo`: the fluid's force options (the reaction is the fluid's pair force, computed again).
   void fluid_on_solids(StepContext<D, B>& cx, const FluidForceOptions& fo) const {
     if (active_)
-      B::for_each(cx.n(), FluidOnSolidPass<D>{cx.list(), cx.kern, cx.view(), cx.mats, fo, mode_ != SolidCoupling::Traction});
+      B::for_each(cx.n(), FluidOnSolidPass<D>{cx.pairs(), fo, mode_ != SolidCoupling::Traction});
   }
 
  private:

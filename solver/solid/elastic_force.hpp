@@ -20,6 +20,7 @@
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
+#include "stage/pass_context.hpp"
 
 namespace psph {
 
@@ -42,31 +43,28 @@ PSPH_HD inline Vec<D> navier_pair(const Vec<D>& du, const Vec<D>& e, Real k, Rea
 
 template <int D>
 struct ElasticForcePass {
-  NeighbourList<D> nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  MaterialTable<D> mats;
+  PairContext<D> c;  // lists, kernel, particles, materials
   Real damping = 0;  // zeta (1/s): a -= zeta v
   // The elastic acceleration (eq. 17) of elastic particle i.
   PSPH_HD Vec<D> elastic_acceleration(int i) const {
-    const int mi = s.material[i];
-    const Real k_i = mats[mi].bulk_modulus, mu_i = mats[mi].shear_modulus;
-    const Vec<D> u_i = s.u[i];
+    const int mi = c.s.material[i];
+    const Real k_i = c.mats[mi].bulk_modulus, mu_i = c.mats[mi].shear_modulus;
+    const Vec<D> u_i = c.s.u[i];
     Vec<D> f = Vec<D>::zero();
-    nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
-      const int mj = s.material[j];
-      if (r <= Real(0) || mats.is_fluid(mj) || mats.is_rigid(mj)) return;  // rigid: contact only
+    c.nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
+      const int mj = c.s.material[j];
+      if (r <= Real(0) || c.mats.is_fluid(mj) || c.mats.is_rigid(mj)) return;  // rigid: contact only
       Real k = k_i, mu = mu_i;
-      if (mats.is_elastic(mj) && mj != mi)
-        k = harmonic_mean(k_i, mats[mj].bulk_modulus), mu = harmonic_mean(mu_i, mats[mj].shear_modulus);
-      f += navier_pair<D>(u_i - s.u[j], rij * (Real(1) / r), k, mu) * (s.m[j] / s.rho[j] * kern.F(r));
+      if (c.mats.is_elastic(mj) && mj != mi)
+        k = harmonic_mean(k_i, c.mats[mj].bulk_modulus), mu = harmonic_mean(mu_i, c.mats[mj].shear_modulus);
+      f += navier_pair<D>(u_i - c.s.u[j], rij * (Real(1) / r), k, mu) * (c.s.m[j] / c.s.rho[j] * c.kern.F(r));
     });
-    return f * (Real(1) / s.rho[i]);
+    return f * (Real(1) / c.s.rho[i]);
   }
   PSPH_HD void operator()(int i) const {
-    const int mi = s.material[i];
-    if (!mats.is_elastic(mi)) return;
-    s.a[i] = elastic_acceleration(i) + mats.body_force[mi] - s.v[i] * damping;
+    const int mi = c.s.material[i];
+    if (!c.mats.is_elastic(mi)) return;
+    c.s.a[i] = elastic_acceleration(i) + c.mats.body_force[mi] - c.s.v[i] * damping;
   }
 };
 
@@ -76,8 +74,8 @@ template <int D>
 struct ElasticEnergyOf {
   ElasticForcePass<D> pass;
   PSPH_HD Real operator()(int i) const {
-    if (!pass.mats.is_elastic(pass.s.material[i])) return Real(0);
-    return Real(-0.5) * pass.s.m[i] * dot(pass.s.u[i], pass.elastic_acceleration(i));
+    if (!pass.c.mats.is_elastic(pass.c.s.material[i])) return Real(0);
+    return Real(-0.5) * pass.c.s.m[i] * dot(pass.c.s.u[i], pass.elastic_acceleration(i));
   }
 };
 

@@ -75,7 +75,7 @@ class ElasticStage {
     if (cx.walls) B::for_each(cx.n(), ClampDisplacementPass<D>{cx.view(), cx.mats});
     if (stress_form() || cx.fluid)
       with_solid_neighbours(cx, [&](auto nb) {
-        B::for_each(cx.n(), StrainStressPass<D, decltype(nb)>{nb, cx.kern, cx.view(), cx.mats});
+        B::for_each(cx.n(), StrainStressPass<D, decltype(nb)>{cx.pairs(nb)});
       });
   }
 
@@ -83,11 +83,11 @@ class ElasticStage {
     if (!active_) return;
     const Real zeta = Real(o_.solid_damping_rate);
     const bool traction = cx.fluid && o_.solid_coupling == SolidCoupling::Traction;
-    if (traction) B::for_each(cx.n(), AmbientPressurePass<D>{cx.list(), cx.kern, cx.view(), cx.mats});
+    if (traction) B::for_each(cx.n(), AmbientPressurePass<D>{cx.pairs()});
     with_solid_neighbours(cx, [&](auto nb) {
       using NB = decltype(nb);
-      if (stress_form()) B::for_each(cx.n(), StressForcePass<D, NB>{nb, cx.kern, cx.view(), cx.mats, zeta, traction});
-      else B::for_each(cx.n(), ElasticForcePass<D>{cx.reference_list(), cx.kern, cx.view(), cx.mats, zeta});
+      if (stress_form()) B::for_each(cx.n(), StressForcePass<D, NB>{cx.pairs(nb), zeta, traction});
+      else B::for_each(cx.n(), ElasticForcePass<D>{cx.pairs(cx.reference_list()), zeta});
       if (o_.solid_artificial_viscosity > 0 || o_.solid_artificial_viscosity_beta > 0 || o_.solid_xsph > 0)
         B::for_each(cx.n(), SolidViscosityPass<D, NB>{nb, cx.grid, cx.kern, cx.view(), cx.mats,
                                                       Real(o_.solid_artificial_viscosity),
@@ -106,7 +106,7 @@ class ElasticStage {
     if (!active_) return 0;
     const ParticleView<D> v = cx.view();
     return stress_form() ? cx.template sum_of<Real>(StrainEnergyOf<D>{v, cx.mats})
-                         : cx.template sum_of<Real>(ElasticEnergyOf<D>{{cx.reference_list(), cx.kern, v, cx.mats}});
+                         : cx.template sum_of<Real>(ElasticEnergyOf<D>{{cx.pairs(cx.reference_list())}});
   }
   double dissipated_energy() const { return dissipated_; }
 
@@ -120,7 +120,7 @@ class ElasticStage {
   // per state.
   void prepare_field(StepContext<D, B>& cx, const std::string& name, long step) {
     if (!active_ || stress_form() || (name != "strain" && name != "stress") || strain_step_ == step) return;
-    B::for_each(cx.n(), StrainStressPass<D>{cx.reference_list(), cx.kern, cx.view(), cx.mats});
+    B::for_each(cx.n(), StrainStressPass<D>{cx.pairs(cx.reference_list())});
     strain_step_ = step;
   }
 

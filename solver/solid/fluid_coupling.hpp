@@ -26,23 +26,21 @@
 #include "solid/constitutive.hpp"
 #include "solid/solid_options.hpp"
 #include "solid/strain.hpp"
+#include "stage/pass_context.hpp"
 
 namespace psph {
 
 template <int D>
 struct SolidInterfacePressurePass {
-  NeighbourList<D> nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  FluidTable<D> mats;
+  PairContext<D> c;  // lists, kernel, particles, materials
   SolidCoupling mode;
   PSPH_HD void operator()(int i) const {
-    const int mi = s.material[i];
-    if (!mats.is_solid(mi)) return;
+    const int mi = c.s.material[i];
+    if (!c.mats.is_solid(mi)) return;
     Real p = 0;  // without fluid neighbours no fluid sees it
-    s.fluid_contact[i] = extrapolate_fluid_pressure(nb, kern, s, mats, i, Vec<D>::zero(), p);
-    const bool eos = mode == SolidCoupling::PairEos && mats.is_elastic(mi);
-    s.p[i] = eos ? small_strain_pressure(s.strain[i], mats[mi].bulk_modulus) : p;
+    c.s.fluid_contact[i] = extrapolate_fluid_pressure(c.nb, c.kern, c.s, c.mats, i, Vec<D>::zero(), p);
+    const bool eos = mode == SolidCoupling::PairEos && c.mats.is_elastic(mi);
+    c.s.p[i] = eos ? small_strain_pressure(c.s.strain[i], c.mats[mi].bulk_modulus) : p;
   }
 };
 
@@ -50,20 +48,17 @@ struct SolidInterfacePressurePass {
 // fluid: the fluid's pressure over the solid's surface layer, 0 deeper.
 template <int D>
 struct AmbientPressurePass {
-  NeighbourList<D> nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  FluidTable<D> mats;
+  PairContext<D> c;  // lists, kernel, particles, materials
   PSPH_HD void operator()(int i) const {
-    if (!mats.is_elastic(s.material[i])) return;
-    const Real w0 = s.fluid_contact[i] ? kern.W(Real(0)) : Real(0);
-    Real psum = s.p[i] * w0, wsum = w0;
-    SolidNeighbours<D>{nb, s, mats}.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
-      if (!mats.is_elastic(s.material[j]) || !s.fluid_contact[j]) return;
-      const Real w = kern.W(r);
-      psum += s.p[j] * w, wsum += w;
+    if (!c.mats.is_elastic(c.s.material[i])) return;
+    const Real w0 = c.s.fluid_contact[i] ? c.kern.W(Real(0)) : Real(0);
+    Real psum = c.s.p[i] * w0, wsum = w0;
+    SolidNeighbours<D>{c.nb, c.s, c.mats}.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
+      if (!c.mats.is_elastic(c.s.material[j]) || !c.s.fluid_contact[j]) return;
+      const Real w = c.kern.W(r);
+      psum += c.s.p[j] * w, wsum += w;
     });
-    s.p_ambient[i] = wsum > Real(0) ? psum / wsum : Real(0);
+    c.s.p_ambient[i] = wsum > Real(0) ? psum / wsum : Real(0);
   }
 };
 
@@ -73,26 +68,23 @@ struct AmbientPressurePass {
 // body (which has no traction). Runs after the solid's own force pass, which sets a_i.
 template <int D>
 struct FluidOnSolidPass {
-  NeighbourList<D> nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  FluidTable<D> mats;
+  PairContext<D> c;  // lists, kernel, particles, materials
   FluidForceOptions opt;
   bool pressure;
   PSPH_HD void operator()(int i) const {
-    const int mi = s.material[i];
-    if (!mats.is_solid(mi)) return;
-    const bool with_pressure = pressure || mats.is_rigid(mi);
-    const Real V_i = mats.volume_of(s, i);
+    const int mi = c.s.material[i];
+    if (!c.mats.is_solid(mi)) return;
+    const bool with_pressure = pressure || c.mats.is_rigid(mi);
+    const Real V_i = c.mats.volume_of(c.s, i);
     Vec<D> f = Vec<D>::zero();
-    nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
-      if (!(r > Real(0)) || !mats.moves_freely(s.material[j], s.x[j])) return;
-      const FluidParticle<D> fj(s, mats, j);
-      const FluidPairTerms<D> t = fluid_pair_terms(fj, s, mats, opt, i, rij * Real(-1), r, kern.F(r), V_i);
-      const Vec<D> a_j = t.artificial + t.viscous * (opt.viscosity ? s.visc_scale[j] : Real(0));
-      f -= (with_pressure ? a_j + t.pressure : a_j) * s.m[j];
+    c.nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
+      if (!(r > Real(0)) || !c.mats.moves_freely(c.s.material[j], c.s.x[j])) return;
+      const FluidParticle<D> fj(c.s, c.mats, j);
+      const FluidPairTerms<D> t = fluid_pair_terms(fj, c.s, c.mats, opt, i, rij * Real(-1), r, c.kern.F(r), V_i);
+      const Vec<D> a_j = t.artificial + t.viscous * (opt.viscosity ? c.s.visc_scale[j] : Real(0));
+      f -= (with_pressure ? a_j + t.pressure : a_j) * c.s.m[j];
     });
-    s.a[i] += f * (Real(1) / s.m[i]);
+    c.s.a[i] += f * (Real(1) / c.s.m[i]);
   }
 };
 

@@ -11,6 +11,7 @@
 #include "kernels/corrections.hpp"
 #include "solid/constitutive.hpp"
 #include "solid/elastic_force.hpp"
+#include "stage/pass_context.hpp"
 
 namespace psph {
 
@@ -34,30 +35,27 @@ struct SolidNeighbours {
 // the force pass.
 template <int D, class NB = NeighbourList<D>>
 struct StrainStressPass {
-  NB nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  MaterialTable<D> mats;
+  PairContext<D, NB> c;  // the solid's neighbours, kernel, particles, materials
   PSPH_HD void operator()(int i) const {
-    const int mi = s.material[i];
-    if (!mats.is_elastic(mi)) return;
-    const SolidNeighbours<D, NB> solid{nb, s, mats};
-    auto volume = [&](int j) { return s.m[j] / s.rho[j]; };
-    const GradientCorrection<D> corr = gradient_correction(solid, kern, i, volume);
+    const int mi = c.s.material[i];
+    if (!c.mats.is_elastic(mi)) return;
+    const SolidNeighbours<D, NB> solid{c.nb, c.s, c.mats};
+    auto volume = [&](int j) { return c.s.m[j] / c.s.rho[j]; };
+    const GradientCorrection<D> corr = gradient_correction(solid, c.kern, i, volume);
     Mat<D> grad_u = Mat<D>::zero();
     solid.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
-      add_outer(grad_u, s.u[j] - s.u[i], corr.gradient(kern.W(r), kern.grad(rij, r)), volume(j));
+      add_outer(grad_u, c.s.u[j] - c.s.u[i], corr.gradient(c.kern.W(r), c.kern.grad(rij, r)), volume(j));
     });
-    const Real k = mats[mi].bulk_modulus, mu = mats[mi].shear_modulus;
-    if (s.piola) {  // Saint Venant-Kirchhoff (large strain): Green-Lagrange strain, Piola stress
+    const Real k = c.mats[mi].bulk_modulus, mu = c.mats[mi].shear_modulus;
+    if (c.s.piola) {  // Saint Venant-Kirchhoff (large strain): Green-Lagrange strain, Piola stress
       const LargeStrain<D> ls = saint_venant_kirchhoff(grad_u, k, mu);
-      s.strain[i] = ls.green_lagrange, s.stress[i] = ls.cauchy, s.piola[i] = ls.piola, s.defgrad[i] = ls.F;
+      c.s.strain[i] = ls.green_lagrange, c.s.stress[i] = ls.cauchy, c.s.piola[i] = ls.piola, c.s.defgrad[i] = ls.F;
     } else {
       const Mat<D> eps = symmetric_part(grad_u);
-      s.strain[i] = eps;
-      s.stress[i] = small_strain_stress(eps, k, mu);
+      c.s.strain[i] = eps;
+      c.s.stress[i] = small_strain_stress(eps, k, mu);
     }
-    s.shepard[i] = corr.shepard, s.shepard_grad[i] = corr.grad_sum, s.kcorr[i] = corr.K;
+    c.s.shepard[i] = corr.shepard, c.s.shepard_grad[i] = corr.grad_sum, c.s.kcorr[i] = corr.K;
   }
 };
 

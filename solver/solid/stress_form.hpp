@@ -10,45 +10,43 @@
 // surfaces, and takes a per-particle stress law (damage).
 #include "solid/clamp.hpp"
 #include "solid/strain.hpp"
+#include "stage/pass_context.hpp"
 
 namespace psph {
 
 template <int D, class NB = NeighbourList<D>>
 struct StressForcePass {
-  NB nb;
-  Kernel<D> kern;
-  ParticleView<D> s;
-  MaterialTable<D> mats;
+  PairContext<D, NB> c;  // the solid's neighbours, kernel, particles, materials
   Real damping = 0;  // zeta (1/s): a -= zeta v
   // The fluid's traction P_i b_i, b_i = sum_j V_j (g_ij - g_ji) over elastic j, P_i the ambient
   // pressure (solid/fluid_coupling.hpp): the stresses taken relative to -P_i I.
   bool traction = false;
   PSPH_HD void operator()(int i) const {
-    const int mi = s.material[i];
-    if (!mats.is_elastic(mi)) return;
+    const int mi = c.s.material[i];
+    if (!c.mats.is_elastic(mi)) return;
     // Small strain: the Cauchy stress; large strain: the first Piola-Kirchhoff stress (the same
     // sum in the reference configuration), and the fluid's pressure on the current surface,
     // J F^-T N dA (Nanson), so that a solid at uniform Cauchy stress -p I stays in equilibrium.
-    const Mat<D> sigma_i = s.piola ? s.piola[i] : s.stress[i];
-    const Real p_i = traction ? s.p_ambient[i] : Real(0);
-    const Mat<D> area = s.defgrad ? cofactor(s.defgrad[i]) : Mat<D>::identity();
+    const Mat<D> sigma_i = c.s.piola ? c.s.piola[i] : c.s.stress[i];
+    const Real p_i = traction ? c.s.p_ambient[i] : Real(0);
+    const Mat<D> area = c.s.defgrad ? cofactor(c.s.defgrad[i]) : Mat<D>::identity();
     Vec<D> f = Vec<D>::zero();
-    SolidNeighbours<D, NB>{nb, s, mats}.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
+    SolidNeighbours<D, NB>{c.nb, c.s, c.mats}.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
       if (r <= Real(0)) return;
-      const Real W = kern.W(r);
-      const Vec<D> gradW = kern.grad(rij, r);  // grad_i W_ij; grad_j W_ji = -grad_i W_ij
-      const Vec<D> g_ij = corrected_gradient(s, i, W, gradW);
+      const Real W = c.kern.W(r);
+      const Vec<D> gradW = c.kern.grad(rij, r);  // grad_i W_ij; grad_j W_ji = -grad_i W_ij
+      const Vec<D> g_ij = corrected_gradient(c.s, i, W, gradW);
       Vec<D> t = sigma_i * g_ij;
-      if (mats.is_elastic(s.material[j])) {
-        const Vec<D> g_ji = corrected_gradient(s, j, W, gradW * Real(-1));
-        t -= (s.piola ? s.piola[j] : s.stress[j]) * g_ji;
+      if (c.mats.is_elastic(c.s.material[j])) {
+        const Vec<D> g_ji = corrected_gradient(c.s, j, W, gradW * Real(-1));
+        t -= (c.s.piola ? c.s.piola[j] : c.s.stress[j]) * g_ji;
         if (traction) t += area * (g_ij - g_ji) * p_i;
       }
-      f += t * (s.m[j] / s.rho[j]);
+      f += t * (c.s.m[j] / c.s.rho[j]);
     });
-    Vec<D> a = f * (Real(1) / s.rho[i]);
-    if (s.mirror[i] >= 0) a += clamp_reaction(nb, kern, s, mats, s.index_of_id[s.mirror[i]]) * (Real(1) / s.m[i]);
-    s.a[i] = a + mats.body_force[mi] - s.v[i] * damping;
+    Vec<D> a = f * (Real(1) / c.s.rho[i]);
+    if (c.s.mirror[i] >= 0) a += clamp_reaction(c.nb, c.kern, c.s, c.mats, c.s.index_of_id[c.s.mirror[i]]) * (Real(1) / c.s.m[i]);
+    c.s.a[i] = a + c.mats.body_force[mi] - c.s.v[i] * damping;
   }
 };
 

@@ -8,6 +8,7 @@
 #include "core/fluid_table.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_stage.hpp"
+#include "stage/pass_context.hpp"
 #include "state/particles.hpp"
 
 namespace psph {
@@ -33,6 +34,10 @@ struct StepContext {
   NeighbourList<D> list() const { return neighbours.list(grid, s.x.data(), kern.support); }
   NeighbourList<D> reference_list() const { return neighbours.list(grid, s.x0.data(), kern.support); }
   NeighbourView<D> cells() const { return neighbours.cells(grid, s.x.data()); }
+  // What a pair pass reads (stage/pass_context.hpp): over the lists, or over neighbours nb.
+  PairContext<D> pairs() { return PairContext<D>{list(), kern, view(), mats}; }
+  template <class NB>
+  PairContext<D, NB> pairs(const NB& nb) { return PairContext<D, NB>{nb, kern, view(), mats}; }
 
   template <class T, class F>
   T sum_of(const F& f) const { return B::template sum_of<T>(n(), f); }
