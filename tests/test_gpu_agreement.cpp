@@ -142,10 +142,11 @@ int compare(const AgreementCase& ac, const std::string& against, int steps) {
     std::printf("  FAIL particle count or ids differ (each of 0..%d once)\n", n - 1);
     return 1;
   }
-  // Same order: both sort stably by the same cell keys. Moved initial positions may reorder.
+  // Both sort stably by the same cell keys, so the order is normally the same; a last-bit
+  // difference in a position on a cell face may reorder a few particles (and their sums): reported,
+  // not failed, since the fields are compared by id.
   const bool same_order = ida == idb;
-  std::printf("  %-22s %s\n", "particle order (ids)", same_order ? "same" : "DIFFERS");
-  if (!same_order && against != "cpu-ulp") ++failures;
+  std::printf("  %-22s %s\n", "particle order (ids)", same_order ? "same" : "differs (fields compared by id)");
   for (const Compared& f : ac.fields) {
     const auto a = values(*ref, f.field, ida), b = values(*other, f.field, idb);
     double scale = 0, diff = a.size() == b.size() ? 0 : std::numeric_limits<double>::infinity();

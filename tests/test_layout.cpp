@@ -1,11 +1,14 @@
 // Particle layouts: concentric shells tile a sphere's volume and keep particles apart; a
 // concentric ring with a concentric core of another material leaves no gap and no overlap.
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
 #include "case_text.hpp"
 #include "scene/concentric_layout.hpp"
+#include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
 
 using namespace psph;
@@ -156,4 +159,45 @@ TEST(ConcentricLayout, OnlySpheresTakeALayout) {
   const std::string seam = test::error_of(test::replaced(kRing, "upper = [0.012, 0.012]", "upper = [0.009, 0.012]\nperiodic = [true, false]"));
   EXPECT_NE(seam.find("periodic"), std::string::npos) << seam;
   EXPECT_NE(seam.find("geometry[0]"), std::string::npos) << seam;
+}
+
+// Shares of the domain built apart tile the whole build: the same particles (position, mass,
+// material), none lost or doubled, for a lattice with shapes and a concentric body, cut through
+// lattice sites and between them. Cases with rigid bodies or jitter are refused by parts.
+TEST(SceneBuilder, SharesOfTheDomainTileTheWholeBuild) {
+  using Particle = std::array<double, 4>;
+  auto particles = [](const Case& c) {
+    std::vector<Particle> out;
+    const int D = c.scene.dimension;
+    for (int i = 0; i < c.scene.count(); ++i)
+      out.push_back({c.scene.x[i * D], c.scene.x[i * D + 1], c.scene.mass[i], double(c.scene.material[i])});
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  for (const char* name : {"drainage_2d", "lame_cylinder_2d"}) {
+    Case whole = load_case_text(embedded_case_text(name), "whole.toml");
+    build_particles(whole);
+    const Bounds domain = domain_bounds(whole.scene);
+    const double dx = whole.scene.options.spacing;
+    for (double cut : {0.37, 0.5 + 0.5 * dx / (domain.upper[0] - domain.lower[0])}) {  // between sites, through one
+      std::vector<Particle> shares;
+      for (int side = 0; side < 2; ++side) {
+        Case part = load_case_text(embedded_case_text(name), "part.toml");
+        Bounds b = domain;
+        const double x = domain.lower[0] + cut * (domain.upper[0] - domain.lower[0]);
+        (side == 0 ? b.upper[0] : b.lower[0]) = x;
+        build_particles(part, b);
+        for (const Particle& p : particles(part)) {
+          EXPECT_TRUE(side == 0 ? p[0] < x : p[0] >= x) << name;
+          shares.push_back(p);
+        }
+      }
+      std::sort(shares.begin(), shares.end());
+      EXPECT_EQ(shares, particles(whole)) << name << " cut at " << cut;
+    }
+  }
+  Case rigid = load_case_text(embedded_case_text("settling_cylinder_2d"), "rigid.toml");
+  Bounds half = domain_bounds(rigid.scene);
+  half.upper[0] = 0.5 * (half.lower[0] + half.upper[0]);
+  EXPECT_THROW(build_particles(rigid, half), std::invalid_argument);
 }

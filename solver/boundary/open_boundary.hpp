@@ -63,7 +63,7 @@ struct BandSum {
 // At the start of a step: each buffer particle takes, along the axis, the fluid's velocity at its
 // mirror point (Shepard average over the interior fluid within the support there, so the buffers
 // carry the developed profile; the band's mean where no fluid is in reach) plus its buffer's
-// characteristic correction du (Simulation::open_boundary_velocity). Its drift correction (the XSPH
+// characteristic correction du (OpenBoundaryStage::buffer_velocity). Its drift correction (the XSPH
 // field, unused in buffers) shifts it down the gradient of the particle concentration,
 // dx = -shift R^2 sum_j V_j grad W_ij per step (particle shifting, Lind et al. 2012, J. Comput.
 // Phys. 231:1499): rows coming round through the seam at the outlet's speed would otherwise pile

@@ -135,7 +135,7 @@ class Simulation final : public Engine {
 
   // Neighbours, density (or the EOS after continuity), forces at the new positions.
   void evaluate() {
-    if (cx_.neighbours.expired(cx_)) rebuild();
+    if (cx_.neighbours.expired(cx_.s, cx_.grid)) rebuild();
     elastic_.strain(cx_);  // before the fluid's sums, which read the solid's volumes
     if (cx_.fluid) {
       open_.convert_inlet(cx_);
@@ -175,7 +175,7 @@ class Simulation final : public Engine {
   }
   // `every_particle`: lists for walls far from the fluid too (the walls' initial density).
   void rebuild(bool every_particle = false) {
-    cx_.neighbours.build(cx_, every_particle);
+    cx_.neighbours.build(cx_.s, cx_.grid, cx_.mats, cx_.list_needs(), every_particle);
     elastic_.lists_built(cx_);
   }
   void ramp(double t) {

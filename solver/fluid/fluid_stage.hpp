@@ -88,7 +88,7 @@ class FluidStage {
   // v <- (I - dt L)^-1 v on the fluid (fluid/viscosity.hpp), L at the current positions with the
   // walls' no-slip velocities of the last force pass; those move to the right-hand side.
   void viscous_step(StepContext<D, B>& cx, double dt, const std::string& when) {
-    if (!o_.implicit_viscosity) return;
+    if (!o_.implicit_viscosity || !cx.fluid) return;
     const int n = cx.n();
     const ParticleView<D> v = cx.view();
     for (auto* a : {&visc_b_, &visc_x_}) a->resize(n);

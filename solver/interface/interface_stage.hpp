@@ -31,7 +31,9 @@ class InterfaceStage {
     if (!active()) return;
     const int n = cx.n();
     const PairContext<D> pc = cx.pairs();
-    if (o_.geometric_wetting && cx.walls) {
+    // Geometric wetting extrapolates the walls' colour; without walls, solids keep cos(theta).
+    const bool geometric = o_.geometric_wetting && cx.walls;
+    if (geometric) {
       B::for_each(n, ColourPass<D>{pc, WallColour::FluidOnly});
       B::for_each(n, NormalPass<D>{pc, WallColour::FluidOnly});
       for (int k = 0; k < 2; ++k) {
@@ -44,7 +46,7 @@ class InterfaceStage {
       B::for_each(n, NormalPass<D>{pc, WallColour::Constant});
     }
     B::for_each(n, CurvaturePass<D>{pc, Real(o_.normal_threshold / cx.smoothing_length),
-                                    o_.geometric_wetting});
+                                    geometric});
   }
 
  private:

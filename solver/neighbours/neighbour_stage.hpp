@@ -15,6 +15,14 @@
 
 namespace psph {
 
+// What the lists must serve in this case (the step context says: stage/step_context.hpp).
+struct ListNeeds {
+  bool walls = false, fluid = false;
+  bool walls_need_walls = false;  // wall density by summation: walls near the fluid list their wall neighbours
+  bool clamps = false;            // clamp walls list every neighbour (solid/clamp.hpp)
+  bool follow_ids = false;        // some stage finds particles by id after reorderings (index_of_id)
+};
+
 template <int D, class B>
 class NeighbourStage {
  public:
@@ -53,30 +61,29 @@ class NeighbourStage {
   // Cell keys, sort by cell (fluid first in each cell), reorder every registered field, ranges, lists.
   // `every_particle`: full lists for every particle (the initial density, which must see every
   // wall's whole neighbourhood to set its rest density); otherwise walls far from the fluid get none.
-  template <class Cx>
-  void build(Cx& cx, bool every_particle) {
-    const int n = cx.n();
-    B::for_each(n, CellKeyPass<D>{cx.grid, cx.s.x.data(), cx.s.material.data(), cx.mats, keys_.data()});
-    B::sort_by_cell(keys_.data(), n, 2 * cx.grid.total, perm_.data(), bucket_start_.data(), bucket_end_.data());
-    cx.s.permute(perm_.data());
-    if (cx.follow_ids) B::for_each(n, IndexOfIdPass<D>{cx.s.view()});
+  void build(ParticleState<D, B>& s, const CellGrid<D>& grid, const MaterialTable<D>& mats, const ListNeeds& needs,
+             bool every_particle) {
+    const int n = s.size();
+    B::for_each(n, CellKeyPass<D>{grid, s.x.data(), s.material.data(), mats, keys_.data()});
+    B::sort_by_cell(keys_.data(), n, 2 * grid.total, perm_.data(), bucket_start_.data(), bucket_end_.data());
+    s.permute(perm_.data());
+    if (needs.follow_ids) B::for_each(n, IndexOfIdPass<D>{s.view()});
     if (every_particle) {
-      cx.s.near_fluid.upload(std::vector<std::uint8_t>(n, 1));
-    } else if (cx.walls && cx.fluid) {  // without fluids every wall lists all its neighbours
-      B::for_each(cx.grid.total, CellNearFluid<D>{cells(cx.grid, cx.s.x.data()), cell_near_.data()});
-      B::for_each(n, NearFluid<D>{cx.grid, cx.s.x.data(), cell_near_.data(), cx.s.near_fluid.data()});
+      s.near_fluid.upload(std::vector<std::uint8_t>(n, 1));
+    } else if (needs.walls && needs.fluid) {  // without fluids every wall lists all its neighbours
+      B::for_each(grid.total, CellNearFluid<D>{cells(grid, s.x.data()), cell_near_.data()});
+      B::for_each(n, NearFluid<D>{grid, s.x.data(), cell_near_.data(), s.near_fluid.data()});
     }
-    build_lists(cx);
+    build_lists(s, grid, mats, needs);
     x_build_.resize(n);
-    B::copy(x_build_.data(), cx.s.x.data(), sizeof(Vec<D>) * n);
+    B::copy(x_build_.data(), s.x.data(), sizeof(Vec<D>) * n);
   }
 
   // The lists hold every pair within R as long as no particle moved by half the skin.
-  template <class Cx>
-  bool expired(const Cx& cx) const {
+  bool expired(const ParticleState<D, B>& s, const CellGrid<D>& grid) const {
     const double half_skin = 0.5 * (radius_ - support_);
     if (half_skin <= 0) return true;
-    return cx.template max_of<Real>(DisplacementSinceBuild<D>{cx.grid, cx.s.x.data(), x_build_.data()}) >= half_skin;
+    return B::template max_of<Real>(s.size(), DisplacementSinceBuild<D>{grid, s.x.data(), x_build_.data()}) >= half_skin;
   }
 
  private:
@@ -84,16 +91,15 @@ class NeighbourStage {
   ListOffset stride_k() const { return B::list_rows_contiguous ? 1 : ListOffset(count_.size()); }
 
   // Lists from the cell list; grows the capacity when a particle has more neighbours.
-  template <class Cx>
-  void build_lists(Cx& cx) {
-    const int n = cx.n();
+  void build_lists(ParticleState<D, B>& s, const CellGrid<D>& grid, const MaterialTable<D>& mats, const ListNeeds& needs) {
+    const int n = s.size();
     for (;;) {
       if (index_.size() < std::size_t(capacity_) * n) index_.resize(std::size_t(capacity_) * n);
-      B::for_each(n, BuildNeighbourList<D>{cells(cx.grid, cx.s.x.data()), cx.s.material.data(), cx.mats,
-                                           cx.s.near_fluid.data(), cx.elastic && cx.walls ? cx.s.mirror.data() : nullptr,
-                                           !cx.continuity, !cx.fluid, index_.data(), count_.data(),
-                                           fluid_count_.data(), capacity_, stride_i(), stride_k()});
-      const int most = n ? cx.template max_of<int>(ListCount<D>{count_.data()}) : 0;
+      B::for_each(n, BuildNeighbourList<D>{cells(grid, s.x.data()), s.material.data(), mats, s.near_fluid.data(),
+                                           needs.clamps ? s.mirror.data() : nullptr, needs.walls_need_walls,
+                                           !needs.fluid, index_.data(), count_.data(), fluid_count_.data(), capacity_,
+                                           stride_i(), stride_k()});
+      const int most = n ? B::template max_of<int>(n, ListCount<D>{count_.data()}) : 0;
       if (most <= capacity_) return;
       capacity_ = most + most / 4 + 4;
     }

@@ -7,7 +7,8 @@ void CaseDraft::note(const toml::table& t, const std::string& path) {
 }
 
 void CaseDraft::refuse_unless(bool applies, const std::string& key, const std::string& why) const {
-  if (!applies && given.count(key)) throw CaseError(file + ": " + key + ": expected " + why);
+  const auto it = given.find(key);
+  if (!applies && it != given.end()) throw CaseError(file + ": " + key + it->second + ": expected " + why);
 }
 
 int CaseDraft::material(CaseReader& r, const std::string& key, MaterialKind kind, const std::string& what) const {

@@ -82,10 +82,11 @@ void check_fixed_step(const CaseDraft& d) {
 
 }  // namespace
 
+// Keys without effect first: they explain a combination's error better than the combination.
 void cross_check(const CaseDraft& d) {
-  check_solids(d);
-  check_interface(d);
   check_fluid_keys(d);
+  check_interface(d);
+  check_solids(d);
   check_fixed_step(d);
 }
 

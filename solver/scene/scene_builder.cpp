@@ -134,8 +134,8 @@ class Builder {
   std::uniform_real_distribution<double> jitter_;
 };
 
-bool in_part(const Bounds& part, const double* x) {
-  for (int k = 0; k < part.dimension; ++k)
+bool in_part(const Bounds& part, const double* x, int dimension) {
+  for (int k = 0; k < dimension; ++k)
     if (x[k] < part.lower[k] || x[k] >= part.upper[k]) return false;
   return true;
 }
@@ -145,13 +145,14 @@ void place_lattice(Case& c, Builder& b, const Bounds& part) {
   const Scene& sc = c.scene;
   const int D = sc.dimension;
   const double dx = sc.options.spacing;
+  // The sites' index range around the part (one site wider: in_part below decides).
   int lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
   long total = 1;
   for (int k = 0; k < D; ++k) {
     const int n = static_cast<int>(std::floor((sc.upper[k] - sc.lower[k]) / dx + 1e-6));
-    total *= n;
-    lo[k] = std::clamp(static_cast<int>(std::ceil((part.lower[k] - sc.lower[k]) / dx - 0.5)), 0, n);
-    hi[k] = std::clamp(static_cast<int>(std::ceil((part.upper[k] - sc.lower[k]) / dx - 0.5)), lo[k], n);
+    lo[k] = std::clamp(static_cast<int>(std::floor((part.lower[k] - sc.lower[k]) / dx - 0.5)), 0, n);
+    hi[k] = std::clamp(static_cast<int>(std::ceil((part.upper[k] - sc.lower[k]) / dx - 0.5)) + 1, lo[k], n);
+    total *= hi[k] - lo[k];
   }
   if (total > 400'000'000L)
     throw CaseError(c.file + ": discretisation.spacing: the domain holds " + std::to_string(total) +
@@ -162,7 +163,7 @@ void place_lattice(Case& c, Builder& b, const Bounds& part) {
   for (;;) {
     double x[3];
     for (int k = 0; k < D; ++k) x[k] = sc.lower[k] + (idx[k] + 0.5) * dx;
-    const int g = b.owner_of(x);
+    const int g = in_part(part, x, D) ? b.owner_of(x) : -1;
     if (g >= 0 && c.geometry[g].material >= 0 && !c.geometry[g].shape->places_points()) b.add(x, g, std::pow(dx, D));
     int d = 0;
     while (d < D && ++idx[d] >= hi[d]) idx[d] = lo[d], ++d;
@@ -186,7 +187,7 @@ void place_own_points(Case& c, Builder& b, const Bounds& part) {
           throw CaseError(c.file + ": geometry[" + std::to_string(g) + "]: a concentric sphere must lie inside the "
                           "domain along its periodic axes; expected a centre and radius that keep it off the seam");
       }
-      if (inside && in_part(part, p.x.data()) && b.owner_of(p.x.data()) == static_cast<int>(g))
+      if (inside && in_part(part, p.x.data(), sc.dimension) && b.owner_of(p.x.data()) == static_cast<int>(g))
         b.add(p.x.data(), static_cast<int>(g), p.volume);
     }
   }
@@ -216,8 +217,14 @@ void check_rigid_bodies(const Case& c, const Builder& b) {
   }
 }
 
-// Each [[solid_load]] takes the particles of its material inside its box.
-void assign_solid_loads(Case& c) {
+bool has_rigid_geometry(const Case& c) {
+  for (const auto& g : c.geometry)
+    if (g.material >= 0 && c.scene.materials[g.material].props.kind == MaterialKind::Rigid) return true;
+  return false;
+}
+
+// Each [[solid_load]] takes the particles of its material inside its box (`check`: some).
+void assign_solid_loads(Case& c, bool check) {
   Scene& sc = c.scene;
   const int D = sc.dimension;
   sc.load_mask.assign(sc.material.size(), 0);
@@ -230,7 +237,7 @@ void assign_solid_loads(Case& c) {
       for (int k = 0; k < D; ++k) in = in && sc.x[i * D + k] >= ld.lower[k] && sc.x[i * D + k] <= ld.upper[k];
       if (in) sc.load_mask[i] |= 1 << l, ++taken;
     }
-    if (taken == 0)
+    if (check && taken == 0)
       throw CaseError(c.file + ": solid_load[" + std::to_string(l) + "]: the box holds no particle of its material");
   }
 }
@@ -242,12 +249,21 @@ Bounds domain_bounds(const Scene& sc) { return Bounds{sc.dimension, sc.lower, sc
 void build_particles(Case& c) { build_particles(c, domain_bounds(c.scene)); }
 
 void build_particles(Case& c, const Bounds& part) {
+  const Scene& sc = c.scene;
+  bool whole = true;
+  for (int k = 0; k < sc.dimension; ++k) whole &= part.lower[k] <= sc.lower[k] && part.upper[k] >= sc.upper[k];
+  // A share's rigid bodies need the other shares' particles (mass, centre, inertia), and the
+  // disorder is drawn in lattice order from the first site: neither is built by parts yet.
+  if (!whole && (sc.options.jitter > 0 || has_rigid_geometry(c)))
+    throw std::invalid_argument(c.file + ": a share of the domain is built only for cases without rigid bodies and "
+                                "without discretisation.jitter");
   Builder b(c);
   place_lattice(c, b, part);
   place_own_points(c, b, part);
+  assign_solid_loads(c, whole);
+  if (!whole) return;  // the checks below are over the whole case
   check_rigid_bodies(c, b);
   add_rigid_rotation(c.scene);
-  assign_solid_loads(c);
   if (b.moving() == 0)
     throw CaseError(c.file + ": geometry: the geometry yields no fluid, elastic or rigid particles (" +
                     std::to_string(c.scene.material.size()) + " particles in all); check the shapes and the domain");

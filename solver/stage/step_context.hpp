@@ -28,6 +28,7 @@ struct StepContext {
   double force_time = 0;    // the time at which the forces being evaluated act
 
   int n() const { return s.size(); }
+  ListNeeds list_needs() const { return ListNeeds{walls, fluid, !continuity, elastic && walls, follow_ids}; }
   bool solids() const { return elastic || rigid; }
   ParticleView<D> view() { return s.view(); }
   // The lists at the current positions, and at the solids' reference positions (small strain).
