@@ -1,9 +1,14 @@
 // Case-file checking: each kind of bad input is rejected with the file, the key and what was
 // expected.
+#include <sys/stat.h>
+
+#include <cstdio>
+
 #include <gtest/gtest.h>
 
 #include "case_text.hpp"
 #include "scene/case_file.hpp"
+#include "scene/case_reader.hpp"
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
 
@@ -129,4 +134,39 @@ TEST(CaseFile, KeysWithoutEffectAreRefused) {
   EXPECT_EQ(error_of(bubble), "");
   expect_error(replaced(bubble, "[interface]", "[interface]\ncontact_line_force = false"),
                {"interface.contact_line_force", "kind = \"wall\""});
+}
+
+// Hostile files are refused before toml++ parses them (it recurses: 100,000 levels overflow the
+// stack) or before they are read at all (a FIFO or a device would block or never end).
+TEST(CaseFile, HostileFilesAreRefusedWithoutParsing) {
+  std::string deep_header = "[";
+  for (int k = 0; k < 100000; ++k) deep_header += "a.";
+  expect_error(deep_header + "a]\n", {"nested", "expected at most 64"});
+  expect_error("x = " + std::string(100000, '[') + std::string(100000, ']') + "\n", {"nested", "line 1"});
+  expect_error(base_case() + "\n# " + std::string(2 << 20, 'x') + "\n", {"bytes; expected at most 1048576"});
+  // Legal: an array of numbers over several lines (their dots are no nesting).
+  EXPECT_EQ(error_of(replaced(base_case(), "lower = [-1.5e-4, 0.0]\nupper", "lower = [\n  -1.5e-4,\n  0.0]\nupper")), "");
+  const std::string fifo = testing::TempDir() + "poresph_case_fifo";
+  std::remove(fifo.c_str());
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  for (const std::string& path : {fifo, std::string("/dev/zero"), testing::TempDir()}) {
+    try {
+      load_case_file(path);
+      ADD_FAILURE() << path << " accepted";
+    } catch (const CaseError& e) {
+      EXPECT_NE(std::string(e.what()).find("expected a regular file"), std::string::npos) << e.what();
+    }
+  }
+  std::remove(fifo.c_str());
+}
+
+// An echoed value is cut short and escaped: no 100 kB error line, no raw control or invalid bytes.
+TEST(CaseFile, EchoedValuesAreShortAndEscaped) {
+  const std::string huge = error_of(replaced(base_case(), "kind = \"fluid\"", "kind = \"" + std::string(100000, 'f') + "\""));
+  EXPECT_LT(huge.size(), 1000u);
+  EXPECT_NE(huge.find("..."), std::string::npos) << huge;
+  const std::string odd = error_of(replaced(base_case(), "kind = \"fluid\"", "kind = \"fl\\u0001ui\\u202ed\""));
+  EXPECT_NE(odd.find("fl\\x01ui\\xe2\\x80\\xaed"), std::string::npos) << odd;
+  EXPECT_EQ(shown("caf\xc3\xa9"), "caf\xc3\xa9");  // UTF-8 kept
+  EXPECT_EQ(shown("a\xff" "b"), "a\\xffb");          // not UTF-8: escaped
 }

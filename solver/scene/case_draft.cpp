@@ -15,7 +15,7 @@ int CaseDraft::material(CaseReader& r, const std::string& key, MaterialKind kind
   const std::string name = r.string(key);
   const auto it = mat_index.find(name);
   if (it == mat_index.end() || c.scene.materials[it->second].props.kind != kind)
-    r.fail(key, "expected the name of " + what + " under [materials], got \"" + name + "\"");
+    r.fail(key, "expected the name of " + what + " under [materials], got \"" + shown(name) + "\"");
   return it->second;
 }
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
@@ -55,23 +56,79 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
   return c;
 }
 
+namespace {
+
+constexpr std::size_t kMaxCaseBytes = 1 << 20;  // a case file is a few kB; its images are separate files
+constexpr int kMaxNesting = 64;                 // tables and arrays within each other
+
+// The deepest nesting of tables (dotted headers and keys) and of arrays and inline tables, outside
+// strings and comments, with its line: toml++ parses by recursion, so a file nested 100,000
+// levels deep would overflow the stack.
+std::pair<int, int> deepest_nesting(const std::string& text) {
+  int deepest = 0, at = 1, line = 1, brackets = 0, dots = 0;
+  char quote = 0;
+  bool comment = false, key = true, header = false;  // key: before '=' on a line outside a value
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char ch = text[i];
+    if (ch == '\n') {
+      ++line, comment = false, dots = 0, header = false, key = brackets == 0;
+      continue;
+    }
+    if (comment) continue;
+    if (quote) {
+      if (ch == '\\' && quote == '"') ++i;
+      else if (ch == quote) quote = 0;
+      continue;
+    }
+    if (ch == '"' || ch == '\'') quote = ch;
+    else if (ch == '#') comment = true;
+    else if (ch == '[' && key && brackets == 0) header = true, key = false, ++brackets;
+    else if (ch == '[' || ch == '{') ++brackets;
+    else if (ch == ']' || ch == '}') brackets = brackets > 0 ? brackets - 1 : 0;
+    else if (ch == '.' && (key || (header && brackets > 0))) ++dots;  // a dotted key or table header
+    else if (ch == '=') key = false;
+    if (brackets + dots > deepest) deepest = brackets + dots, at = line;
+  }
+  return {deepest, at};
+}
+
+}  // namespace
+
 Case load_case_text(const std::string& text, const std::string& file) {
+  if (text.size() > kMaxCaseBytes)
+    throw CaseError(file + ": the case file holds " + std::to_string(text.size()) + " bytes; expected at most " +
+                    std::to_string(kMaxCaseBytes) + " (1 MiB)");
+  const auto [depth, line] = deepest_nesting(text);
+  if (depth > kMaxNesting)
+    throw CaseError(file + " (line " + std::to_string(line) + "): tables or arrays nested " + std::to_string(depth) +
+                    " deep; expected at most " + std::to_string(kMaxNesting));
   toml::table tbl;
   try {
     tbl = toml::parse(text, file);
   } catch (const toml::parse_error& e) {
     throw CaseError(file + " (line " + std::to_string(e.source().begin.line) + "): not valid TOML: " +
-                    std::string(e.description()));
+                    shown(std::string(e.description()), 200));
   }
   return parse_case(tbl, file);
 }
 
+// Only a regular file of bounded size is read: a FIFO or a device would block or never end.
 Case load_case_file(const std::string& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) throw CaseError(path + ": cannot open the case file");
+  if (!std::filesystem::is_regular_file(status))
+    throw CaseError(path + ": expected a regular file (a directory, FIFO or device is not a case file)");
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec && size > kMaxCaseBytes)
+    throw CaseError(path + ": the case file holds " + std::to_string(size) + " bytes; expected at most " +
+                    std::to_string(kMaxCaseBytes) + " (1 MiB)");
   std::ifstream in(path);
   if (!in) throw CaseError(path + ": cannot open the case file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return load_case_text(ss.str(), path);
+  std::string text(kMaxCaseBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return load_case_text(text, path);
 }
 
 void set_case_value(toml::table& tbl, const std::string& dotted_key, const toml::node& value) {

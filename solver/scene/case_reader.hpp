@@ -20,6 +20,37 @@ inline std::string toml_line_of(const toml::node& n) {
   return src.begin.line ? " (line " + std::to_string(src.begin.line) + ")" : "";
 }
 
+// A value or key as an error message shows it: at most `most` bytes (then "..."), control
+// characters, bidirectional overrides and bytes that are not UTF-8 written as \xNN, so that a
+// hostile case file cannot flood the terminal or rewrite it.
+inline std::string shown(const std::string& s, std::size_t most = 80) {
+  std::string out;
+  auto hex = [&](unsigned char b) {
+    const char* d = "0123456789abcdef";
+    out += "\\x", out += d[b >> 4], out += d[b & 15];
+  };
+  std::size_t i = 0;
+  while (i < s.size() && out.size() < most) {
+    const unsigned char b = static_cast<unsigned char>(s[i]);
+    const int len = b < 0x80 ? 1 : (b >> 5) == 6 ? 2 : (b >> 4) == 14 ? 3 : (b >> 3) == 30 ? 4 : 0;
+    bool ok = len > 0 && i + len <= s.size();
+    for (int k = 1; ok && k < len; ++k) ok = (static_cast<unsigned char>(s[i + k]) >> 6) == 2;
+    const bool bidi = ok && len == 3 && b == 0xe2 && static_cast<unsigned char>(s[i + 1]) == 0x80 &&
+                      (static_cast<unsigned char>(s[i + 2]) >= 0xaa && static_cast<unsigned char>(s[i + 2]) <= 0xae);
+    const bool isolate = ok && len == 3 && b == 0xe2 && static_cast<unsigned char>(s[i + 1]) == 0x81 &&
+                         (static_cast<unsigned char>(s[i + 2]) >= 0xa6 && static_cast<unsigned char>(s[i + 2]) <= 0xa9);
+    if (!ok || (len == 1 && (b < 0x20 || b == 0x7f)) || bidi || isolate) {
+      hex(b);
+      ++i;
+      continue;
+    }
+    out.append(s, i, len);
+    i += len;
+  }
+  if (i < s.size()) out += "...";
+  return out;
+}
+
 // Reads one table and remembers which keys were used.
 class CaseReader {
  public:
@@ -27,7 +58,7 @@ class CaseReader {
       : t_(t), file_(std::move(file)), path_(std::move(path)) {}
 
   [[noreturn]] void fail(const std::string& key, const std::string& expected, const toml::node* n = nullptr) const {
-    throw CaseError(file_ + ": " + qualified(key) + (n ? toml_line_of(*n) : "") + ": " + expected);
+    throw CaseError(file_ + ": " + shown(qualified(key), 200) + (n ? toml_line_of(*n) : "") + ": " + expected);
   }
   std::string qualified(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
 
@@ -86,14 +117,14 @@ class CaseReader {
       if (o == v) return v;
     std::string list;
     for (const auto& o : options) list += (list.empty() ? "" : ", ") + ("\"" + o + "\"");
-    fail(key, "expected one of " + list + ", got \"" + v + "\"", node(key));
+    fail(key, "expected one of " + list + ", got \"" + shown(v) + "\"", node(key));
   }
   // An axis named "x", "y" or "z" of a `dim`-dimensional case, as 0, 1 or 2.
   int axis(const std::string& key, int dim, std::optional<std::string> def = std::nullopt) {
     static const std::vector<std::string> names{"x", "y", "z"};
     const std::string v = choice(key, names, def);
     const int a = static_cast<int>(std::find(names.begin(), names.end(), v) - names.begin());
-    if (a >= dim) fail(key, "expected an axis of this " + std::to_string(dim) + "D case, got \"" + v + "\"", node(key));
+    if (a >= dim) fail(key, "expected an axis of this " + std::to_string(dim) + "D case, got \"" + shown(v) + "\"", node(key));
     return a;
   }
   bool boolean(const std::string& key, bool def) {

@@ -50,7 +50,7 @@ void read_filling(CaseReader& r, CaseDraft& d, GeometryShape& s, bool pack) {
   const std::string mname = r.string("material");
   if (mname == "empty") s.material = -1;
   else if (d.mat_index.count(mname)) s.material = d.mat_index.at(mname);
-  else r.fail("material", "expected \"empty\" or the name of a table under [materials], got \"" + mname + "\"");
+  else r.fail("material", "expected \"empty\" or the name of a table under [materials], got \"" + shown(mname) + "\"");
   const bool rigid = s.material >= 0 && mats[s.material].props.kind == MaterialKind::Rigid;
   if (pack && rigid)
     r.fail("material", "expected a box or a sphere for a rigid material (each geometry is one rigid body: a "
