@@ -170,3 +170,22 @@ TEST(CaseFile, EchoedValuesAreShortAndEscaped) {
   EXPECT_EQ(shown("caf\xc3\xa9"), "caf\xc3\xa9");  // UTF-8 kept
   EXPECT_EQ(shown("a\xff" "b"), "a\\xffb");          // not UTF-8: escaped
 }
+
+// Sizes that drive the cost are bounded before any work, in a type that cannot overflow.
+TEST(CaseFile, UnboundedWorkIsRefusedBeforeItStarts) {
+  expect_error(replaced(base_case(), "support_radius = 1.0e-4", "support_radius = 20.0"),
+               {"discretisation.support_radius", "at most 10 spacings", "neighbour candidates"});
+  // A 2 cm cube at 1e-9 m: 8e21 sites, past what a 64-bit product holds (it wrapped below the bound).
+  const std::string tiny = replaced(replaced(embedded_case_text("elastic_cube_3d"), "spacing = 1.0e-3", "spacing = 1.0e-9"),
+                                    "support_radius = 2.0e-3", "support_radius = 2.0e-9");
+  Case c = load_case_text(tiny, "tiny.toml");
+  try {
+    build_particles(c);
+    ADD_FAILURE() << "built 1e18 sites";
+  } catch (const CaseError& e) {
+    EXPECT_NE(std::string(e.what()).find("expected at most 4e8"), std::string::npos) << e.what();
+  }
+  const std::string ring = embedded_case_text("lame_cylinder_2d");
+  EXPECT_EQ(error_of(ring), "");
+  expect_error(replaced(ring, "radius = 0.02", "radius = 1.0e4"), {"geometry[", "].radius", "at most 4e8 particles"});
+}

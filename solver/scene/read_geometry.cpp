@@ -1,5 +1,7 @@
 // [[geometry]]: the shapes that place each material's particles, in order (a later shape takes the
 // particles of an earlier one where they overlap; "empty" removes them).
+#include <cmath>
+
 #include "scene/case_tables.hpp"
 
 namespace psph {
@@ -41,6 +43,10 @@ std::shared_ptr<const Shape> read_shape(CaseReader& r, CaseDraft& d, const std::
   const double radius = r.positive("radius");
   // "lattice": the domain's lattice sites inside; "concentric": shells fitted to the surface.
   const bool concentric = r.choice("layout", {"lattice", "concentric"}, "lattice") == "concentric";
+  // Its shells are placed whole before the domain clips them: as many points as (R / dx)^D.
+  const double points = std::pow(radius / d.c.scene.options.spacing, D);
+  if (concentric && !(points <= 4e8))
+    r.fail("radius", "expected a concentric sphere of at most 4e8 particles, got about " + CaseReader::fmt(points));
   return make_sphere(centre, radius, concentric, D);
 }
 

@@ -8,6 +8,8 @@
 namespace psph {
 namespace {
 
+constexpr double kMaxSupportSpacings = 10;  // the references use 2-3; 10 is ~4,000 neighbours in 3D
+
 KernelType kernel_from(const std::string& s) {
   return s == "wendland_c2" ? KernelType::WendlandC2 : s == "quintic_spline" ? KernelType::QuinticSpline
                                                                               : KernelType::CubicSpline;
@@ -51,6 +53,13 @@ void read_discretisation(CaseReader& top, CaseDraft& d) {
                            : r.positive("smoothing_length") * support_per_smoothing_length(o.kernel);
   if (o.support_radius < o.spacing)
     r.fail(has_R ? "support_radius" : "smoothing_length", "expected a support radius of at least one spacing");
+  // The work per particle grows as (support / spacing)^D: bounded before anything is built.
+  const double ratio = o.support_radius / o.spacing;
+  if (ratio > kMaxSupportSpacings)
+    r.fail(has_R ? "support_radius" : "smoothing_length",
+           "expected a support radius of at most " + CaseReader::fmt(kMaxSupportSpacings) + " spacings, got " +
+               CaseReader::fmt(ratio) + " (about " + CaseReader::fmt(std::round(std::pow(2 * ratio, d.dimension()))) +
+               " neighbour candidates per particle)");
   for (int k = 0; k < d.dimension(); ++k) {
     const double cells = (sc.upper[k] - sc.lower[k]) / o.spacing;
     if (sc.periodic[k] && std::fabs(cells - std::round(cells)) > 1e-6 * cells)

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "engine/rigid_scene.hpp"
+#include "scene/case_reader.hpp"
 #include "scene/concentric_layout.hpp"
 
 namespace psph {
@@ -147,6 +148,11 @@ void place_lattice(Case& c, Builder& b, const Bounds& part) {
   const double dx = sc.options.spacing;
   // The sites' index range around the part (one site wider: in_part below decides).
   int lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+  double sites = 1;  // in double: the product of counts overflows an integer before it is checked
+  for (int k = 0; k < D; ++k) sites *= std::floor((sc.upper[k] - sc.lower[k]) / dx + 1e-6);
+  if (!(sites <= 400'000'000.0))
+    throw CaseError(c.file + ": discretisation.spacing: the domain holds " + CaseReader::fmt(sites) +
+                    " lattice sites; expected at most 4e8 (at ~0.5 kB a particle, " + CaseReader::fmt(sites * 5e-7) + " GB)");
   long total = 1;
   for (int k = 0; k < D; ++k) {
     const int n = static_cast<int>(std::floor((sc.upper[k] - sc.lower[k]) / dx + 1e-6));
