@@ -59,7 +59,7 @@ class Simulation final : public Engine {
     if (opt_.implicit_viscosity) {
       // Explicit kick with the non-viscous forces, backward-Euler viscous step, drift.
       kick(dt);
-      fluid_.viscous_step(cx_, dt, when());
+      fluid_.viscous_step(cx_, dt, [this] { return when(); });
       fluid_.density_rate(cx_);
       drift(dt);
       evaluate();

@@ -87,7 +87,9 @@ class FluidStage {
 
   // v <- (I - dt L)^-1 v on the fluid (fluid/viscosity.hpp), L at the current positions with the
   // walls' no-slip velocities of the last force pass; those move to the right-hand side.
-  void viscous_step(StepContext<D, B>& cx, double dt, const std::string& when) {
+  // `when()` says when, for the message of a solve that fails (built only then).
+  template <class When>
+  void viscous_step(StepContext<D, B>& cx, double dt, const When& when) {
     if (!o_.implicit_viscosity || !cx.fluid) return;
     const int n = cx.n();
     const ParticleView<D> v = cx.view();
@@ -107,7 +109,7 @@ class FluidStage {
     if (!r.converged)
       throw InstabilityError("the implicit viscous solve did not converge (relative residual " +
                              std::to_string(r.relative_residual) + " after " + std::to_string(r.iterations) +
-                             " BiCGSTAB iterations)" + when);
+                             " BiCGSTAB iterations)" + when());
     B::for_each(n, SetFluidVelocity<D>{visc_x_.data(), v, cx.mats});
   }
 
