@@ -178,7 +178,8 @@ TEST(CaseFile, UnboundedWorkIsRefusedBeforeItStarts) {
   // A 2 cm cube at 1e-9 m: 8e21 sites, past what a 64-bit product holds (it wrapped below the bound).
   const std::string tiny = replaced(replaced(embedded_case_text("elastic_cube_3d"), "spacing = 1.0e-3", "spacing = 1.0e-9"),
                                     "support_radius = 2.0e-3", "support_radius = 2.0e-9");
-  Case c = load_case_text(tiny, "tiny.toml");
+  const std::string tiny_short = replaced(tiny, "end = 0.01", "end = 1.0e-12");  // steps within bounds
+  Case c = load_case_text(tiny_short, "tiny.toml");
   try {
     build_particles(c);
     ADD_FAILURE() << "built 1e18 sites";
@@ -188,4 +189,66 @@ TEST(CaseFile, UnboundedWorkIsRefusedBeforeItStarts) {
   const std::string ring = embedded_case_text("lame_cylinder_2d");
   EXPECT_EQ(error_of(ring), "");
   expect_error(replaced(ring, "radius = 0.02", "radius = 1.0e4"), {"geometry[", "].radius", "at most 4e8 particles"});
+}
+
+TEST(CaseFile, GrainPacksAreBoundedBeforeTheyAreDrawn) {
+  const std::string pack = embedded_case_text("drainage_2d");
+  EXPECT_EQ(error_of(pack), "");
+  expect_error(replaced(pack, "grain_radius = ", "grain_radius = 1.0e-6 #"),
+               {"].grain_radius", "at most 10000 grains, got about"});
+}
+
+TEST(CaseFile, CaseNamesThatBecomePathsAreChecked) {
+  for (const char* bad : {"a\\u0000b", "a\\nb", "a\\u202eb", "a b", "../up", ".hidden", "-flag", "x/y", ""})
+    expect_error(replaced(base_case(), "name = \"poiseuille_2d\"", std::string("name = \"") + bad + "\""),
+                 {"case.name", "letters, digits"});
+  expect_error(replaced(base_case(), "name = \"poiseuille_2d\"", "name = \"" + std::string(65, 'a') + "\""),
+               {"case.name", "1 to 64"});
+  EXPECT_EQ(error_of(replaced(base_case(), "name = \"poiseuille_2d\"", "name = \"" + std::string(64, 'a') + "\"")), "");
+}
+
+TEST(CaseFile, NumbersAreFiniteAndBounded) {
+  for (const char* v : {"nan", "inf", "-inf", "1e308", "-1e308", "5e-324", "1e16"})
+    expect_error(replaced(base_case(), "body_force = [0.0, 1.0e-3]", std::string("body_force = [0.0, ") + v + "]"),
+                 {"materials.water.body_force", "expected a finite number, 0 or of magnitude in [1e-30, 1e15]"});
+  expect_error(replaced(base_case(), "upper = [1.0e-3, 4.0e-4]", "upper = [inf, 4.0e-4]"), {"geometry[1].upper"});
+  expect_error(replaced(base_case(), "end = 0.5", "end = 5e-324"), {"time.end", "finite number"});
+  expect_error(replaced(base_case(), "density = 1000.0", "density = nan"), {"materials.water.density"});
+}
+
+TEST(CaseFile, ShapesOutsideTheDomainAreRefused) {
+  expect_error(replaced(base_case(), "lower = [0.0, 0.0]\nupper = [1.0e-3, 4.0e-4]", "lower = [5.0, 0.0]\nupper = [6.0, 4.0e-4]"),
+               {"geometry[1].upper", "overlaps the domain", "axis 0"});
+  expect_error(replaced(base_case(), "lower = [0.0, 0.0]\nupper = [1.0e-3, 4.0e-4]", "lower = [1.0e-3, 0.0]\nupper = [0.0, 4.0e-4]"),
+               {"geometry[1].upper", "upper > lower"});
+}
+
+TEST(CaseFile, RunsThatCouldNotEndOrWouldFillTheDiskAreRefused) {
+  const std::string c = base_case();
+  expect_error(replaced(c, "kind = \"wall\"", "kind = \"wall\"\n[solver]\ndt_factor = 1e-7"),
+               {"time.end", "at most 1e+09 steps, got about", "solver.dt_factor"});
+  expect_error(replaced(c, "kind = \"wall\"", "kind = \"wall\"\n[solver]\ndt = 1e-29"), {"time.end", "solver.dt)"});
+  expect_error(replaced(c, "material = \"water\"", "material = \"water\"\nvelocity = [1e12, 0.0]"), {"time.end", "steps"});
+  expect_error(replaced(c, "extract_interval = 0.1", "extract_interval = 1e-9"),
+               {"output.extract_interval", "at most 100000 extract files", "got 5e+08"});
+  expect_error(replaced(c, "monitor_interval = 0.01", "monitor_interval = 1e-9"), {"output.monitor_interval", "monitor rows"});
+  expect_error(replaced(c, "extract_interval = 0.1", "extract_interval = 0.1\ncheckpoint_interval = 1e-12"),
+               {"output.checkpoint_interval", "checkpoints"});
+  expect_error(c + "\n[visualisation]\ninterval = 1e-10\n", {"visualisation.interval", "frames per pipeline"});
+}
+
+TEST(CaseFile, OutputFieldsMustExistInTheCase) {
+  Case c = load_case_text(replaced(base_case(), "extract_interval = 0.1", "extract_interval = 0.1\nfields = [\"velocity\", \"stress\"]"),
+                          "f.toml");
+  try {
+    check_output_fields(c, {"position", "velocity", "pressure"});
+    ADD_FAILURE() << "accepted a field the case does not have";
+  } catch (const CaseError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("f.toml: output.fields: no particle field \"stress\" in this case; expected some of: position, "
+                       "velocity, pressure"),
+              std::string::npos)
+        << msg;
+  }
+  EXPECT_NO_THROW(check_output_fields(c, {"velocity", "stress"}));
 }

@@ -32,7 +32,10 @@ int cmd_check(const std::string& path) {
   Case c;
   if (!prepare(c, path, nullptr)) return 2;
   try {
-    InSituSession pipelines(c, {}, "");  // the case's pipelines exist and declare their fields
+    // What `run` builds before its run directory: the engine (on the CPU: the same fields on
+    // every backend), the output fields it has, the pipelines and the fields they declare.
+    check_output_fields(c, make_engine(c.scene, "cpu")->field_names());
+    InSituSession pipelines(c, {}, "");
   } catch (const std::exception& e) {
     std::cerr << "poresph: " << e.what() << "\n";
     return 2;

@@ -17,7 +17,7 @@ struct RunOptions {
 };
 
 // Exit codes: 0 done, 2 bad input (nothing written), 3 unstable run (diagnostic in log.txt),
-// 4 runtime failure, 130 interrupted.
+// 4 runtime failure, 5 an output could not be written (disk full), 130 interrupted.
 int cmd_run(const std::string& case_path, const RunOptions& opt);
 int cmd_demo(const RunOptions& opt);
 int cmd_check(const std::string& case_path);

@@ -5,8 +5,10 @@
 
 #include "app/bench_cases.hpp"
 #include "app/commands.hpp"
+#include "app/last_resort.hpp"
 
 int main(int argc, char** argv) {
+  psph::install_last_resort();
   CLI::App app{"poresph: pore-scale SPH simulation of gas, water and deforming clay"};
   app.require_subcommand(1);
   psph::RunOptions ro;
@@ -72,17 +74,24 @@ int main(int argc, char** argv) {
   demo->add_option("--bind", ro.bind, "the dashboard's address (default 127.0.0.1)");
 
   CLI11_PARSE(app, argc, argv);
-  if (*run) return psph::cmd_run(case_path, ro);
-  if (*check) return psph::cmd_check(case_path);
-  if (*serve) return psph::cmd_serve(run_dir, serve_port, serve_bind);
-  if (*figures) return psph::cmd_figures(run_dir, fig_pipelines);
-  if (*validate && validate_list) return psph::cmd_validate_list();
-  if (*validate) return psph::cmd_validate(names, full, json, vbackend);
-  if (*bench && bench_list) {
-    for (const auto& spec : psph::bench_specs(vbackend, quick)) std::cout << spec.name << "\n";
-    return 0;
+  const auto dispatch = [&]() -> int {
+    if (*run) return psph::cmd_run(case_path, ro);
+    if (*check) return psph::cmd_check(case_path);
+    if (*serve) return psph::cmd_serve(run_dir, serve_port, serve_bind);
+    if (*figures) return psph::cmd_figures(run_dir, fig_pipelines);
+    if (*validate && validate_list) return psph::cmd_validate_list();
+    if (*validate) return psph::cmd_validate(names, full, json, vbackend);
+    if (*bench && bench_list) {
+      for (const auto& spec : psph::bench_specs(vbackend, quick)) std::cout << spec.name << "\n";
+      return 0;
+    }
+    if (*bench) return psph::cmd_bench(bench_names, json, vbackend, quick, accuracy, stability);
+    if (*demo) return psph::cmd_demo(ro);
+    return 1;
+  };
+  try {
+    return dispatch();
+  } catch (...) {
+    psph::internal_error();
   }
-  if (*bench) return psph::cmd_bench(bench_names, json, vbackend, quick, accuracy, stability);
-  if (*demo) return psph::cmd_demo(ro);
-  return 1;
 }

@@ -9,6 +9,7 @@
 
 #include "app/interrupts.hpp"
 #include "io/checkpoint_file.hpp"
+#include "io/durable_file.hpp"
 
 namespace psph {
 namespace {
@@ -30,7 +31,11 @@ int refuse(const std::string& what) {
 
 int RunDriver::run() {
   if (const int code = open()) return code;
-  plan_outputs();
+  try {
+    plan_outputs();
+  } catch (const std::exception& e) {
+    return discard(e.what());
+  }
   if (const int code = start()) return code;
   catch_interrupts();
   loop();
@@ -42,14 +47,13 @@ int RunDriver::run() {
 int RunDriver::open() {
   try {
     engine_ = make_engine(c_.scene, opt_.backend);
+    check_output_fields(c_, engine_->field_names());
   } catch (const std::exception& e) {
     return refuse(e.what());
   }
   if (!opt_.restart.empty()) {
-    restart_file_ = std::filesystem::is_directory(opt_.restart) ? latest_checkpoint(opt_.restart) : opt_.restart;
     try {
-      if (restart_file_.empty()) throw CheckpointError(opt_.restart + ": no checkpoint (checkpoints/step_*.ckpt) in this directory");
-      engine_->restore(read_checkpoint_file(restart_file_));
+      engine_->restore(restart_checkpoint());
     } catch (const std::exception& e) {
       const std::string msg = e.what();
       return refuse("--restart " + (msg.rfind(restart_file_, 0) == 0 ? "" : restart_file_ + ": ") + msg);
@@ -77,12 +81,36 @@ int RunDriver::open() {
   return 0;
 }
 
+// A refusal after the run directory was made: nothing has run, so no run directory is left.
+int RunDriver::discard(const std::string& what) {
+  rd_.reset();
+  std::error_code ec;
+  std::filesystem::remove_all(dir_, ec);
+  return refuse(what);
+}
+
+// The checkpoint file given, or a run directory's newest intact one (the newer damaged ones are
+// skipped and said so in the log).
+Checkpoint RunDriver::restart_checkpoint() {
+  restart_file_ = opt_.restart;
+  if (!std::filesystem::is_directory(opt_.restart)) return read_checkpoint_file(opt_.restart);
+  RestartCheckpoint r = newest_intact_checkpoint(opt_.restart);
+  for (const auto& f : r.removed) restart_notes_.push_back("removed " + f + " (a checkpoint write cut short)");
+  for (const auto& why : r.skipped) restart_notes_.push_back("skipped a damaged checkpoint: " + why);
+  if (r.path.empty())
+    throw CheckpointError(opt_.restart + ": no intact checkpoint (checkpoints/step_*.ckpt) in this directory" +
+                          (r.skipped.empty() ? "" : ": " + r.skipped.front()));
+  restart_file_ = r.path;
+  return std::move(r.data);
+}
+
 void RunDriver::plan_outputs() {
   std::ostringstream head;
   head << "poresph run " << c_.file << ": case " << c_.name << ", " << engine_->particles() << " particles, "
        << c_.scene.dimension << "D, backend " << engine_->backend() << " (" << engine_->device() << "), "
        << precision_name() << " precision, end time " << c_.end_time << " s";
   log(head.str());
+  for (const auto& note : restart_notes_) log(note);
   if (!restart_file_.empty())
     log("restarted from " + restart_file_ + " at t = " + std::to_string(engine_->time()) + " s, step " +
         std::to_string(engine_->steps()));
@@ -118,17 +146,20 @@ int RunDriver::start() {
   if (opt_.serve >= 0) {
     try {
       dashboard_ = std::make_unique<DashboardServer>(DashboardOptions{rd_->path(), "", opt_.bind, opt_.serve});
-    } catch (const std::exception& e) {  // nothing has run: no run directory is left
-      rd_.reset();
-      std::filesystem::remove_all(dir_);
-      return refuse(e.what());
+    } catch (const std::exception& e) {
+      return discard(e.what());
     }
     // The token goes to the terminal only: log.txt is served to anyone who can reach the port.
     log("dashboard: " + dashboard_->url() + " (to pause, resume or stop: the token in " + rd_->path() + "/token)");
     std::cout << "dashboard with control: " << dashboard_->url() << "?token=" << supervision_->token() << std::endl;
   }
-  monitor();
-  if (extracts_) writer_->write(*engine_);
+  try {
+    monitor();
+    if (extracts_) writer_->write(*engine_);
+  } catch (const WriteError& e) {
+    write_failed(e.what());  // the loop does not start; finish() reports it
+    return 0;
+  }
   if (!insitu_->active()) return 0;
   try {
     insitu_->start(*engine_, c_, rd_->path(), [&](const std::string& l) { log(l); });
@@ -141,17 +172,21 @@ int RunDriver::start() {
 }
 
 void RunDriver::loop() {
+  if (code_) return;
   try {
     while (engine_->time() < c_.end_time) {
       const double t_end = c_.end_time;
       engine_->step(std::min({t_end, mon_.next(), ext_.next(), insitu_->active() ? vis_.next() : t_end}));
       outputs_due();
       progress_line();
+      if (!rd_->write_failure().empty()) throw WriteError(rd_->write_failure());
       if (controls()) break;
     }
   } catch (const InstabilityError& e) {
     status_ = "unstable", code_ = 3, diagnostic_ = e.what();
     log(std::string("unstable: ") + e.what());
+  } catch (const WriteError& e) {
+    write_failed(e.what());
   } catch (const std::exception& e) {
     status_ = "failed", code_ = 4, diagnostic_ = e.what();
     log(std::string("failed: ") + e.what());
@@ -252,18 +287,26 @@ void RunDriver::monitor() {
 void RunDriver::checkpoint() {
   if (engine_->steps() == last_checkpoint_step_) return;
   last_checkpoint_step_ = engine_->steps();
-  try {
-    log("checkpoint " + rd_->save_checkpoint(*engine_, c_.name, c_.output.checkpoint_keep));
-  } catch (const std::exception& e) {
-    log(std::string("warning: no checkpoint: ") + e.what());
-  }
+  log("checkpoint " + rd_->save_checkpoint(*engine_, c_.name, c_.output.checkpoint_keep));
+}
+
+// A record or checkpoint that could not be written ends the run (exit 5): its newest checkpoint
+// on disk is intact, the outputs after it are not all there.
+void RunDriver::write_failed(const std::string& what) {
+  status_ = "write_failed", code_ = 5, diagnostic_ = what;
+  log("write failed: " + what);
+  std::cerr << "poresph: write failed: " << what << "\n";
 }
 
 void RunDriver::finish() {
   // An unstable or failed state is not saved: the last good checkpoint stays.
   const bool cut_short = status_ == "interrupted" || status_ == "stopped";
-  if (status_ != "unstable" && status_ != "failed") monitor(), checkpoint();
-  if (extracts_ && cut_short) writer_->write(*engine_);
+  try {
+    if (code_ == 0 || code_ == 130) monitor(), checkpoint();
+    if (extracts_ && cut_short) writer_->write(*engine_);
+  } catch (const WriteError& e) {
+    write_failed(e.what());
+  }
   if (insitu_->active()) {
     try {
       if (cut_short) insitu_->output(*engine_);  // the state it stopped at, as a last frame
@@ -278,7 +321,11 @@ void RunDriver::finish() {
     j["insitu"] = insitu_->stats(wall);
     log(insitu_->report(wall));
   }
-  rd_->write_summary(j);
+  try {
+    rd_->write_summary(j);
+  } catch (const WriteError& e) {
+    write_failed(e.what());
+  }
   supervision_->finish(*engine_, status_, diagnostic_, wall);
   if (dashboard_) {
     dashboard_->stop();  // after a last look at the run directory: its clients get the final state

@@ -13,6 +13,7 @@
 #include "catalyst/insitu_session.hpp"
 #include "dashboard/dashboard_server.hpp"
 #include "engine/engine.hpp"
+#include "io/checkpoint_file.hpp"
 #include "io/particle_output.hpp"
 #include "io/run_directory.hpp"
 #include "monitors/two_phase.hpp"
@@ -29,6 +30,8 @@ class RunDriver {
  private:
   using clock = std::chrono::steady_clock;
   int open();           // engine, restart, in-situ session, run directory: 0 or 2 (nothing left behind)
+  Checkpoint restart_checkpoint();
+  int discard(const std::string& what);  // refuses (2) and removes the new run directory
   void plan_outputs();  // extract fields, output intervals and clocks
   int start();          // supervision, dashboard, the first outputs: 0 or an exit code
   void loop();          // steps to the end, a stop or an interrupt
@@ -38,6 +41,7 @@ class RunDriver {
   void take_requests();
   void monitor();
   void checkpoint();
+  void write_failed(const std::string& what);
   void finish();
   nlohmann::json summary(double wall) const;
   double wall_now() const { return std::chrono::duration<double>(clock::now() - t0_).count(); }
@@ -47,6 +51,7 @@ class RunDriver {
   const RunOptions& opt_;
   std::unique_ptr<Engine> engine_;
   std::string restart_file_, dir_;
+  std::vector<std::string> restart_notes_;
   std::unique_ptr<InSituSession> insitu_;
   std::unique_ptr<RunDirectory> rd_;
   std::unique_ptr<ParticleWriter> writer_;

@@ -3,6 +3,7 @@
 // from the scene, the time step, the health check, statistics and checkpoints.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "engine/simulation.hpp"
@@ -45,7 +46,7 @@ void Simulation<D, B>::setup_context(const Scene& sc) {
   cx.s.x.upload(x), cx.s.v.upload(v), cx.s.m.upload(m), cx.s.rho.upload(rho), cx.s.rho0.upload(rho);
   cx.s.material.upload(mat), cx.s.id.upload(id);
   cx.s.near_fluid.upload(std::vector<std::uint8_t>(n, 1));  // recomputed per step when there are walls
-  cx.neighbours.resize(n);
+  cx.neighbours.resize(cx.s, n);
 }
 
 template <int D, class B>
@@ -74,6 +75,12 @@ double Simulation<D, B>::next_dt(double t_stop) {
   }
   if (t_ + dt > t_stop) dt = t_stop - t_;
   if (t_ + dt >= t_stop * (1 - 1e-12)) dt = t_stop - t_;  // land exactly on output times
+  if (!(t_ + dt > t_)) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.3g", dt);
+    throw InstabilityError(std::string("the time step (") + b + " s) makes no progress" + when() +
+                           ": the clock no longer advances in double precision");
+  }
   return dt;
 }
 
@@ -111,8 +118,7 @@ StepStats Simulation<D, B>::stats() {
 
 template <int D, class B>
 Checkpoint Simulation<D, B>::checkpoint() {
-  rebuild();  // the lists are then a function of the saved positions alone
-  Checkpoint c;
+  Checkpoint c;  // the state as it is: with "list_positions", a restart rebuilds the same lists
   c.dimension = D, c.particles = cx_.n(), c.precision = precision_name();
   c.time = t_, c.last_dt = dt_, c.first_dt = dt_first_, c.steps = steps_;
   elastic_.save(c);
@@ -134,8 +140,10 @@ void Simulation<D, B>::restore(const Checkpoint& c) {
   if (c.dimension != D) differs("dimension", std::to_string(D), std::to_string(c.dimension));
   if (c.particles != n) differs("particle count", std::to_string(n), std::to_string(c.particles));
   if (c.precision != precision_name()) differs("precision", precision_name(), c.precision);
+  const bool saved_lists = c.field(kListPositionsField) != nullptr;  // older checkpoints have none
   for (const auto& f : cx_.s.fields().all()) {
     const CheckpointField* cf = c.field(f.info.name);
+    if (!cf && f.info.name == kListPositionsField) continue;
     if (!cf) throw std::invalid_argument("the checkpoint has no field '" + f.info.name + "'");
     if (cf->element_bytes != f.element_bytes || cf->bytes.size() != f.element_bytes * std::size_t(n))
       differs("size of field '" + f.info.name + "'", std::to_string(f.element_bytes * n) + " bytes",
@@ -143,12 +151,18 @@ void Simulation<D, B>::restore(const Checkpoint& c) {
   }
   const std::string rigid = rigid_.mismatch(c);
   if (!rigid.empty()) throw std::invalid_argument("the checkpoint " + rigid);
-  for (const auto& f : cx_.s.fields().all()) f.from_host_bytes(c.field(f.info.name)->bytes);
+  for (const auto& f : cx_.s.fields().all())
+    if (const CheckpointField* cf = c.field(f.info.name)) f.from_host_bytes(cf->bytes);
   rigid_.load(c);
   elastic_.load(c);
   t_ = c.time, dt_ = c.last_dt, dt_first_ = c.first_dt, steps_ = c.steps;
   ramp(t_);
-  rebuild();
+  if (saved_lists) {
+    cx_.neighbours.build_as_saved(cx_.s, cx_.grid, cx_.mats, cx_.list_needs());
+    elastic_.lists_built(cx_);
+  } else {
+    rebuild();
+  }
   rigid_.sum_loads(cx_);  // the accelerations are the checkpoint's
 }
 

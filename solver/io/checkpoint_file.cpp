@@ -1,10 +1,13 @@
 #include "io/checkpoint_file.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
+
+#include "io/durable_file.hpp"
 
 namespace psph {
 namespace fs = std::filesystem;
@@ -19,22 +22,10 @@ void write_checkpoint_file(const std::string& path, const Checkpoint& c, const s
                          {"rigid_bodies", c.rigid_bodies}, {"fields", nlohmann::json::array()}};
   for (const auto& f : c.fields)
     head["fields"].push_back({{"name", f.name}, {"element_bytes", f.element_bytes}, {"bytes", f.bytes.size()}});
-  const std::string tmp = path + ".partial";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw CheckpointError(path + ": cannot create the checkpoint file");
-    out << kMagic << '\n' << head.dump() << '\n';
-    for (const auto& f : c.fields) out.write(reinterpret_cast<const char*>(f.bytes.data()), std::streamsize(f.bytes.size()));
-    out.flush();
-    if (!out) {
-      out.close();
-      std::remove(tmp.c_str());
-      throw CheckpointError(path + ": writing the checkpoint failed (disk full?)");
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) throw CheckpointError(path + ": cannot rename the finished checkpoint: " + ec.message());
+  DurableFile out(path);
+  out.write(std::string(kMagic) + '\n' + head.dump() + '\n');
+  for (const auto& f : c.fields) out.write(f.bytes.data(), f.bytes.size());
+  out.commit();
 }
 
 Checkpoint read_checkpoint_file(const std::string& path) {
@@ -76,19 +67,44 @@ Checkpoint read_checkpoint_file(const std::string& path) {
   return c;
 }
 
-std::string latest_checkpoint(const std::string& dir) {
+namespace {
+
+fs::path checkpoint_folder(const std::string& dir) {
   fs::path d(dir);
-  if (fs::is_directory(d / "checkpoints")) d /= "checkpoints";
-  std::string best;
-  if (!fs::is_directory(d)) return best;
-  for (const auto& e : fs::directory_iterator(d)) {
+  return fs::is_directory(d / "checkpoints") ? d / "checkpoints" : d;
+}
+
+// step_<zero-padded step>.ckpt, newest (highest step) first.
+std::vector<std::string> checkpoints_newest_first(const fs::path& d) {
+  std::vector<std::string> all;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(d, ec)) {
     const std::string name = e.path().filename().string();
-    // step_<zero-padded step>.ckpt: the lexicographic maximum is the newest
-    if (e.is_regular_file() && name.rfind("step_", 0) == 0 && e.path().extension() == ".ckpt" &&
-        (best.empty() || name > fs::path(best).filename().string()))
-      best = e.path().string();
+    if (e.is_regular_file() && name.rfind("step_", 0) == 0 && e.path().extension() == ".ckpt")
+      all.push_back(e.path().string());
   }
-  return best;
+  std::sort(all.rbegin(), all.rend());
+  return all;
+}
+
+}  // namespace
+
+RestartCheckpoint newest_intact_checkpoint(const std::string& dir) {
+  RestartCheckpoint r;
+  const fs::path d = checkpoint_folder(dir);
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(d, ec))
+    if (e.path().extension() == ".partial" && fs::remove(e.path(), ec)) r.removed.push_back(e.path().string());
+  for (const std::string& f : checkpoints_newest_first(d)) {
+    try {
+      r.data = read_checkpoint_file(f);
+      r.path = f;
+      return r;
+    } catch (const CheckpointError& x) {
+      r.skipped.push_back(x.what());
+    }
+  }
+  return r;
 }
 
 }  // namespace psph

@@ -1,10 +1,11 @@
 #include "io/particle_output.hpp"
 
+#include "io/durable_file.hpp"
 #include "io/field_staging.hpp"
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #if defined(PORESPH_HAVE_VTK)
@@ -40,8 +41,13 @@ std::string ParticleWriter::write(Engine& e) {
   w->SetInputData(poly.wrap(frame_));
   w->SetDataModeToAppended();
   w->SetCompressorTypeToZLib();
-  if (w->Write() != 1) throw std::runtime_error(path + ": VTK could not write the extract");
-  std::filesystem::rename(path + ".tmp", path);
+  if (w->Write() != 1) {
+    std::error_code ec;
+    std::filesystem::remove(path + ".tmp", ec);
+    throw WriteError(path + ": VTK could not write the extract (disk full?)");
+  }
+  std::error_code ec;
+  if (std::filesystem::rename(path + ".tmp", path, ec), ec) throw WriteError(path + ": " + ec.message());
 #else
   (void)e;
   throw std::runtime_error("particle extracts need ParaView's VTK; this poresph was built without it");
@@ -52,13 +58,11 @@ std::string ParticleWriter::write(Engine& e) {
 }
 
 void ParticleWriter::write_collection() const {
-  const std::string path = dir_ + "/particles.pvd";
-  std::ofstream o(path + ".tmp");
+  std::ostringstream o;
   o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
   for (const auto& [t, f] : written_) o << "    <DataSet timestep=\"" << t << "\" file=\"" << f << "\"/>\n";
   o << "  </Collection>\n</VTKFile>\n";
-  o.close();
-  std::filesystem::rename(path + ".tmp", path);
+  write_file_durably(dir_ + "/particles.pvd", o.str());
 }
 
 }  // namespace psph

@@ -1,29 +1,37 @@
 #include "io/run_directory.hpp"
 
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <iostream>
 #include <set>
 
 #include "io/checkpoint_file.hpp"
+#include "io/durable_file.hpp"
 
 namespace psph {
 namespace fs = std::filesystem;
 
 RunDirectory::RunDirectory(const std::string& path, const std::string& resolved) : path_(path) {
-  if (fs::exists(path) && !(fs::is_directory(path) && fs::is_empty(path)))
+  std::error_code ec;
+  if (fs::exists(path, ec) && !(fs::is_directory(path, ec) && fs::is_empty(path, ec)))
     throw std::runtime_error("--out " + path + ": the run directory exists and is not empty; choose another");
-  for (const char* sub : {"", "/extracts", "/images", "/checkpoints"}) fs::create_directories(path + sub);
-  std::ofstream(path + "/case.resolved.toml") << resolved << "\n";
+  for (const char* sub : {"", "/extracts", "/images", "/checkpoints"})
+    if (fs::create_directories(path + sub, ec), ec)
+      throw std::runtime_error("--out " + path + ": cannot create the run directory: " + ec.message());
+  write_file_durably(path + "/case.resolved.toml", resolved + "\n");
   log_.open(path + "/log.txt");
   monitors_.open(path + "/monitors.csv");
+  if (!log_ || !monitors_) throw std::runtime_error("--out " + path + ": cannot create log.txt and monitors.csv in it");
 }
 
 void RunDirectory::log(const std::string& line) {
   std::cout << line << std::endl;
   log_ << line << '\n';
   log_.flush();
+  if (!log_ && write_failure_.empty()) write_failure_ = path_ + "/log.txt: writing failed: " + std::strerror(errno);
 }
 
 void RunDirectory::monitor(Engine& e, const std::vector<MonitorValue>& extra) {
@@ -43,12 +51,11 @@ void RunDirectory::monitor(Engine& e, const std::vector<MonitorValue>& extra) {
   for (const auto& m : extra) monitors_ << ',' << m.value;
   monitors_ << '\n';
   monitors_.flush();
+  if (!monitors_) throw WriteError(path_ + "/monitors.csv: writing failed: " + std::strerror(errno));
 }
 
 void RunDirectory::write_summary(const nlohmann::json& j) const {
-  const std::string p = path_ + "/summary.json";
-  std::ofstream(p + ".tmp") << j.dump(2) << "\n";
-  fs::rename(p + ".tmp", p);
+  write_file_durably(path_ + "/summary.json", j.dump(2) + "\n");
 }
 
 std::string RunDirectory::save_checkpoint(Engine& e, const std::string& case_name, int keep) {
@@ -57,10 +64,11 @@ std::string RunDirectory::save_checkpoint(Engine& e, const std::string& case_nam
   const std::string file = path_ + "/checkpoints" + name;
   write_checkpoint_file(file, e.checkpoint(), case_name);
   std::set<std::string> all;  // zero-padded names sort by step
-  for (const auto& f : fs::directory_iterator(path_ + "/checkpoints"))
+  std::error_code ec;
+  for (const auto& f : fs::directory_iterator(path_ + "/checkpoints", ec))
     if (f.path().extension() == ".ckpt") all.insert(f.path().string());
   while (keep > 0 && int(all.size()) > keep) {
-    fs::remove(*all.begin());
+    fs::remove(*all.begin(), ec);
     all.erase(all.begin());
   }
   return file;

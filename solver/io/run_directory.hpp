@@ -18,11 +18,14 @@ class RunDirectory {
   const std::string& path() const { return path_; }
   std::string extracts() const { return path_ + "/extracts"; }
 
-  // A line to the terminal and to log.txt.
+  // A line to the terminal and to log.txt. It does not throw (it reports failures of the other
+  // writes): the first failed write to log.txt is kept in write_failure().
   void log(const std::string& line);
+  const std::string& write_failure() const { return write_failure_; }
   // A row of monitors.csv: the engine's statistics, then the named `extra` values (the stages'
   // monitors and the run's own); the first row's names are the columns, later rows repeat them.
   void monitor(Engine& e, const std::vector<MonitorValue>& extra = {});
+  // The writes below throw a WriteError (io/durable_file.hpp) naming the file and the reason.
   void write_summary(const nlohmann::json& j) const;
   // Writes checkpoints/step_<step>.ckpt and deletes the oldest beyond `keep`; returns its path.
   std::string save_checkpoint(Engine& e, const std::string& case_name, int keep);
@@ -31,6 +34,7 @@ class RunDirectory {
   std::string path_;
   std::ofstream log_, monitors_;
   std::vector<std::string> extra_columns_;
+  std::string write_failure_;
   bool header_written_ = false;
 };
 

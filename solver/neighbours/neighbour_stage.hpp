@@ -23,6 +23,8 @@ struct ListNeeds {
   bool follow_ids = false;        // some stage finds particles by id after reorderings (index_of_id)
 };
 
+inline constexpr const char* kListPositionsField = "list_positions";
+
 template <int D, class B>
 class NeighbourStage {
  public:
@@ -45,7 +47,13 @@ class NeighbourStage {
     return grid;
   }
 
-  void resize(int n) { keys_.resize(n), perm_.resize(n), count_.resize(n), fluid_count_.resize(n); }
+  // The positions of the last build are a particle field: a checkpoint carries them, so that a
+  // restart rebuilds the very lists of the run it continues (build_as_saved) and a checkpoint
+  // changes nothing in the run.
+  void resize(ParticleState<D, B>& s, int n) {
+    keys_.resize(n), perm_.resize(n), count_.resize(n), fluid_count_.resize(n), x_build_.resize(n);
+    s.add_field(x_build_, D, kListPositionsField, "m", "positions at the last neighbour-list build");
+  }
 
   // The cell ranges of the last sort, for searches beyond the lists (open-boundary buffers).
   NeighbourView<D> cells(const CellGrid<D>& grid, const Vec<D>* x) const {
@@ -63,6 +71,29 @@ class NeighbourStage {
   // wall's whole neighbourhood to set its rest density); otherwise walls far from the fluid get none.
   void build(ParticleState<D, B>& s, const CellGrid<D>& grid, const MaterialTable<D>& mats, const ListNeeds& needs,
              bool every_particle) {
+    sort_and_list(s, grid, mats, needs, every_particle);
+    B::copy(x_build_.data(), s.x.data(), sizeof(Vec<D>) * s.size());
+  }
+
+  // After a restore: the lists of the saved build positions (the state is in their cell order
+  // already, so the sort keeps it), then the current positions back.
+  void build_as_saved(ParticleState<D, B>& s, const CellGrid<D>& grid, const MaterialTable<D>& mats,
+                      const ListNeeds& needs) {
+    s.x.swap(x_build_);  // the field "list_positions" is permuted with the state meanwhile
+    sort_and_list(s, grid, mats, needs, false);
+    s.x.swap(x_build_);
+  }
+
+  // The lists hold every pair within R as long as no particle moved by half the skin.
+  bool expired(const ParticleState<D, B>& s, const CellGrid<D>& grid) const {
+    const double half_skin = 0.5 * (radius_ - support_);
+    if (half_skin <= 0) return true;
+    return B::template max_of<Real>(s.size(), DisplacementSinceBuild<D>{grid, s.x.data(), x_build_.data()}) >= half_skin;
+  }
+
+ private:
+  void sort_and_list(ParticleState<D, B>& s, const CellGrid<D>& grid, const MaterialTable<D>& mats,
+                     const ListNeeds& needs, bool every_particle) {
     const int n = s.size();
     B::for_each(n, CellKeyPass<D>{grid, s.x.data(), s.material.data(), mats, keys_.data()});
     B::sort_by_cell(keys_.data(), n, 2 * grid.total, perm_.data(), bucket_start_.data(), bucket_end_.data());
@@ -75,18 +106,8 @@ class NeighbourStage {
       B::for_each(n, NearFluid<D>{grid, s.x.data(), cell_near_.data(), s.near_fluid.data()});
     }
     build_lists(s, grid, mats, needs);
-    x_build_.resize(n);
-    B::copy(x_build_.data(), s.x.data(), sizeof(Vec<D>) * n);
   }
 
-  // The lists hold every pair within R as long as no particle moved by half the skin.
-  bool expired(const ParticleState<D, B>& s, const CellGrid<D>& grid) const {
-    const double half_skin = 0.5 * (radius_ - support_);
-    if (half_skin <= 0) return true;
-    return B::template max_of<Real>(s.size(), DisplacementSinceBuild<D>{grid, s.x.data(), x_build_.data()}) >= half_skin;
-  }
-
- private:
   ListOffset stride_i() const { return B::list_rows_contiguous ? capacity_ : 1; }
   ListOffset stride_k() const { return B::list_rows_contiguous ? 1 : ListOffset(count_.size()); }
 

@@ -6,6 +6,7 @@
 #include "scene/case_tables.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -61,14 +62,21 @@ namespace {
 constexpr std::size_t kMaxCaseBytes = 1 << 20;  // a case file is a few kB; its images are separate files
 constexpr int kMaxNesting = 64;                 // tables and arrays within each other
 
-// The deepest nesting of tables (dotted headers and keys) and of arrays and inline tables, outside
-// strings and comments, with its line: toml++ parses by recursion, so a file nested 100,000
-// levels deep would overflow the stack.
-std::pair<int, int> deepest_nesting(const std::string& text) {
-  int deepest = 0, at = 1, line = 1, brackets = 0, dots = 0;
+// What is checked before toml++ sees the text, outside strings and comments: the deepest nesting
+// of tables (dotted headers and keys) and of arrays and inline tables (toml++ parses by recursion:
+// a file nested 100,000 levels deep would overflow the stack), and the first byte that is not
+// ASCII there or that follows a line-ending backslash in a string (TOML allows neither outside
+// strings; toml++ 3.3 reaches undefined behaviour classifying such a character as whitespace).
+struct TextScan {
+  int deepest = 0, deepest_line = 1, bad_line = 0;
+};
+
+TextScan scan_case_text(const std::string& text) {
+  TextScan r;
+  int line = 1, brackets = 0, dots = 0;
   char quote = 0;
   bool comment = false, key = true, header = false;  // key: before '=' on a line outside a value
-  for (std::size_t i = 0; i < text.size(); ++i) {
+  for (std::size_t i = 0; i < text.size() && !r.bad_line; ++i) {
     const char ch = text[i];
     if (ch == '\n') {
       ++line, comment = false, dots = 0, header = false, key = brackets == 0;
@@ -76,20 +84,23 @@ std::pair<int, int> deepest_nesting(const std::string& text) {
     }
     if (comment) continue;
     if (quote) {
-      if (ch == '\\' && quote == '"') ++i;
+      if (ch == '\\' && quote == '"' && i + 1 < text.size() && std::isspace(static_cast<unsigned char>(text[i + 1])))
+        r.bad_line = line;
+      else if (ch == '\\' && quote == '"') ++i;
       else if (ch == quote) quote = 0;
       continue;
     }
-    if (ch == '"' || ch == '\'') quote = ch;
+    if (static_cast<unsigned char>(ch) >= 0x80) r.bad_line = line;
+    else if (ch == '"' || ch == '\'') quote = ch;
     else if (ch == '#') comment = true;
     else if (ch == '[' && key && brackets == 0) header = true, key = false, ++brackets;
     else if (ch == '[' || ch == '{') ++brackets;
     else if (ch == ']' || ch == '}') brackets = brackets > 0 ? brackets - 1 : 0;
     else if (ch == '.' && (key || (header && brackets > 0))) ++dots;  // a dotted key or table header
     else if (ch == '=') key = false;
-    if (brackets + dots > deepest) deepest = brackets + dots, at = line;
+    if (brackets + dots > r.deepest) r.deepest = brackets + dots, r.deepest_line = line;
   }
-  return {deepest, at};
+  return r;
 }
 
 }  // namespace
@@ -98,10 +109,13 @@ Case load_case_text(const std::string& text, const std::string& file) {
   if (text.size() > kMaxCaseBytes)
     throw CaseError(file + ": the case file holds " + std::to_string(text.size()) + " bytes; expected at most " +
                     std::to_string(kMaxCaseBytes) + " (1 MiB)");
-  const auto [depth, line] = deepest_nesting(text);
-  if (depth > kMaxNesting)
-    throw CaseError(file + " (line " + std::to_string(line) + "): tables or arrays nested " + std::to_string(depth) +
-                    " deep; expected at most " + std::to_string(kMaxNesting));
+  const TextScan scan = scan_case_text(text);
+  if (scan.deepest > kMaxNesting)
+    throw CaseError(file + " (line " + std::to_string(scan.deepest_line) + "): tables or arrays nested " +
+                    std::to_string(scan.deepest) + " deep; expected at most " + std::to_string(kMaxNesting));
+  if (scan.bad_line)
+    throw CaseError(file + " (line " + std::to_string(scan.bad_line) + "): not valid TOML here: expected ASCII outside "
+                    "strings and comments, and no line-ending backslash in a string");
   toml::table tbl;
   try {
     tbl = toml::parse(text, file);

@@ -55,6 +55,10 @@ Case parse_case(const toml::table& tbl, const std::string& file);
 Case load_case_file(const std::string& path);
 Case load_case_text(const std::string& text, const std::string& file);
 
+// output.fields against the particle fields this case's engine has (`available`): throws a
+// CaseError naming the first unknown field and the ones there are.
+void check_output_fields(const Case& c, const std::vector<std::string>& available);
+
 // Sets a dotted key (e.g. "discretisation.spacing") in a parsed table: for validation and benchmark
 // variants of a case.
 void set_case_value(toml::table& tbl, const std::string& dotted_key, const toml::node& value);

@@ -74,8 +74,17 @@ class CaseReader {
       if (def) return *def;
       fail(key, "missing required value (expected a number)");
     }
-    if (auto v = n->value<double>()) return *v;  // integers convert too
+    if (auto v = n->value<double>()) return checked_number(key, *v, n);  // integers convert too
     fail(key, std::string("expected a number, got ") + type_name(*n), n);
+  }
+  // Every number of a case file: finite, and 0 or of a magnitude in [kSmallest, kLargest] (no
+  // SI quantity of a pore-scale case comes near either bound; subnormal values would stall a run).
+  static constexpr double kSmallest = 1e-30, kLargest = 1e15;
+  double checked_number(const std::string& key, double v, const toml::node* n) const {
+    const double a = std::fabs(v);
+    if (!std::isfinite(v) || a > kLargest || (a > 0 && a < kSmallest))
+      fail(key, "expected a finite number, 0 or of magnitude in [1e-30, 1e15], got " + fmt(v), n);
+    return v;
   }
   double positive(const std::string& key, std::optional<double> def = std::nullopt) {
     const double v = number(key, def);
@@ -158,6 +167,7 @@ class CaseReader {
       if constexpr (std::is_same_v<T, bool>) v = (*arr)[k].value_exact<bool>();
       else v = (*arr)[k].value<T>();
       if (!v) fail(key, "expected an array of " + std::to_string(dim) + " " + what, n);
+      if constexpr (std::is_same_v<T, double>) checked_number(key, *v, n);
       out[k] = *v;
     }
     return out;

@@ -1,5 +1,6 @@
 // The checks between tables, after every table is read: combinations that cannot run, and keys
 // that would have no effect in this case (refused with the reason, not silently ignored).
+#include <algorithm>
 #include <cmath>
 
 #include "integrate/timestep.hpp"
@@ -80,6 +81,29 @@ void check_fixed_step(const CaseDraft& d) {
                     " s is impossible: the acoustic/viscous/capillary stability limit is " + CaseReader::fmt(limit) + " s");
 }
 
+// A bound on the steps a run takes, from the step known before the run (at the initial speeds
+// and the body forces): a run of more is refused rather than left to run for months.
+constexpr double kMaxSteps = 1e9;
+
+void check_step_count(const CaseDraft& d) {
+  const SolverOptions& o = d.c.scene.options;
+  double v = 0, a = 0;
+  for (const auto& g : d.c.geometry) v = std::max(v, std::hypot(g.velocity[0], g.velocity[1], g.velocity[2]));
+  std::vector<Material> props;
+  for (const auto& m : d.c.scene.materials) {
+    props.push_back(m.props);
+    a = std::max(a, std::hypot(m.body_force[0], m.body_force[1], m.body_force[2]));
+  }
+  const TimeStepInputs in = time_step_inputs(props.data(), int(props.size()), o.implicit_viscosity, o.surface_tension);
+  const double hs = o.support_radius / support_per_smoothing_length(o.kernel);
+  const double dt = o.fixed_dt > 0 ? o.fixed_dt : time_step_limits(hs, in, v, a, o.dt_factor).min();
+  const double steps = d.c.end_time / dt;
+  if (!(steps <= kMaxSteps))
+    fail(d, "time.end", "expected a run of at most " + CaseReader::fmt(kMaxSteps) + " steps, got about " +
+                            CaseReader::fmt(steps) + " (time.end / a step of " + CaseReader::fmt(dt) + " s" +
+                            (o.fixed_dt > 0 ? ", solver.dt" : " from solver.dt_factor and the stability limits") + ")");
+}
+
 }  // namespace
 
 // Keys without effect first: they explain a combination's error better than the combination.
@@ -88,6 +112,16 @@ void cross_check(const CaseDraft& d) {
   check_interface(d);
   check_solids(d);
   check_fixed_step(d);
+  check_step_count(d);
+}
+
+void check_output_fields(const Case& c, const std::vector<std::string>& available) {
+  for (const auto& f : c.output.fields) {
+    if (std::count(available.begin(), available.end(), f)) continue;
+    std::string list;
+    for (const auto& a : available) list += (list.empty() ? "" : ", ") + a;
+    throw CaseError(c.file + ": output.fields: no particle field \"" + shown(f) + "\" in this case; expected some of: " + list);
+  }
 }
 
 }  // namespace psph

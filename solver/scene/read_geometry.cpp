@@ -7,6 +7,26 @@
 namespace psph {
 namespace {
 
+// The packing tries each grain against those placed, and each lattice site in the box against
+// every grain: both are bounded before the pack is drawn.
+constexpr double kMaxGrains = 1e4, kMaxSiteGrainTests = 2e10;
+
+void bound_grain_pack(CaseReader& r, const GrainPackSpec& p, const CaseDraft& d) {
+  const int D = d.dimension();
+  double box = 1;
+  for (int k = 0; k < D; ++k) box *= p.upper[k] - p.lower[k];
+  const double unit_ball = D == 1 ? 2 : D == 2 ? M_PI : 4 * M_PI / 3;
+  const double grains = p.solid_fraction * box / (unit_ball * std::pow(p.grain_radius, D));
+  const double sites = box / std::pow(d.c.scene.options.spacing, D);
+  if (!(grains <= kMaxGrains))
+    r.fail("grain_radius", "expected a pack of at most " + CaseReader::fmt(kMaxGrains) + " grains, got about " +
+                               CaseReader::fmt(grains) + " (solid_fraction x box volume / grain volume)");
+  if (!(grains * sites <= kMaxSiteGrainTests))
+    r.fail("grain_radius", "expected at most " + CaseReader::fmt(kMaxSiteGrainTests) + " site-grain tests, got about " +
+                               CaseReader::fmt(grains * sites) + " (" + CaseReader::fmt(grains) + " grains x " +
+                               CaseReader::fmt(sites) + " lattice sites in the box)");
+}
+
 std::shared_ptr<const Shape> read_grain_pack(CaseReader& r, CaseDraft& d) {
   GrainPackSpec p;
   r.box(d.dimension(), p.lower, p.upper);
@@ -19,11 +39,19 @@ std::shared_ptr<const Shape> read_grain_pack(CaseReader& r, CaseDraft& d) {
   const long seed = r.integer("seed", 1);
   if (seed < 0) r.fail("seed", "expected an integer >= 0");
   p.seed = static_cast<std::uint64_t>(seed);
+  bound_grain_pack(r, p, d);
   try {
     return make_grain_pack(p, generate_grain_pack(p, d.dimension()).grains, d.dimension());
   } catch (const std::invalid_argument& e) {
     r.fail("solid_fraction", e.what());
   }
+}
+
+// A shape wholly outside the domain would be dropped silently.
+void require_overlap(CaseReader& r, const Scene& sc, const Bounds& b, const std::string& key) {
+  for (int k = 0; k < sc.dimension; ++k)
+    if (!(b.upper[k] > sc.lower[k] && b.lower[k] < sc.upper[k]))
+      r.fail(key, "expected a shape that overlaps the domain; it lies wholly outside it along axis " + std::to_string(k));
 }
 
 // The shape's own keys.
@@ -35,19 +63,19 @@ std::shared_ptr<const Shape> read_shape(CaseReader& r, CaseDraft& d, const std::
   if (shape == "box") {
     Bounds b;
     b.dimension = D;
-    b.lower = r.vec<double>("lower", D);
-    b.upper = r.vec<double>("upper", D);
+    r.box(D, b.lower, b.upper);
     return make_box(b);
   }
   const std::array<double, 3> centre = r.vec<double>("center", D);
   const double radius = r.positive("radius");
   // "lattice": the domain's lattice sites inside; "concentric": shells fitted to the surface.
   const bool concentric = r.choice("layout", {"lattice", "concentric"}, "lattice") == "concentric";
-  // Its shells are placed whole before the domain clips them: as many points as (R / dx)^D.
-  const double points = std::pow(radius / d.c.scene.options.spacing, D);
-  if (concentric && !(points <= 4e8))
+  // Its shells are placed whole before the domain clips them.
+  auto sphere = make_sphere(centre, radius, concentric, D);
+  const double points = sphere->point_estimate(d.c.scene.options.spacing);
+  if (!(points <= 4e8))
     r.fail("radius", "expected a concentric sphere of at most 4e8 particles, got about " + CaseReader::fmt(points));
-  return make_sphere(centre, radius, concentric, D);
+  return sphere;
 }
 
 // What fills the shape, and how it moves at the start.
@@ -83,6 +111,7 @@ void read_geometry(CaseReader& top, CaseDraft& d) {
     GeometryShape s;
     const std::string shape = r.choice("shape", {"box", "sphere", "grain_pack"});
     s.shape = read_shape(r, d, shape);
+    require_overlap(r, d.c.scene, s.shape->bounds(), shape == "box" ? "upper" : shape == "sphere" ? "center" : "lower");
     read_filling(r, d, s, shape == "grain_pack");
     d.c.geometry.push_back(s);
   });

@@ -1,5 +1,6 @@
 // The case tables that set up a run: [case], [domain], [discretisation], [time], [output],
 // [visualisation], [monitors].
+#include <cctype>
 #include <cmath>
 
 #include "kernels/kernel.hpp"
@@ -12,6 +13,25 @@ namespace {
 // to 216 in 3D); the non-local rods of Deptulski 2021 Ch. 3, up to 100 spacings in 1D (200).
 constexpr double kMaxCandidates = 1e4;
 
+// The case name becomes a directory name (runs/<name>-<time>) and is printed on the terminal.
+constexpr std::size_t kMaxNameLength = 64;
+
+bool valid_case_name(const std::string& name) {
+  if (name.empty() || name.size() > kMaxNameLength || name[0] == '.' || name[0] == '-') return false;
+  for (const char ch : name)
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '-' && ch != '.' && ch != '+') return false;
+  return true;
+}
+
+// Outputs a run may write: an interval that would write more is refused before the run fills a disk.
+constexpr double kMaxFiles = 1e5, kMaxRows = 1e7;
+
+void bound_outputs(CaseReader& r, const std::string& key, double end, double interval, double most, const char* what) {
+  if (interval > 0 && !(end / interval <= most))
+    r.fail(key, "expected at most " + CaseReader::fmt(most) + " " + what + " in the run (time.end / " + key + "), got " +
+                    CaseReader::fmt(end / interval), r.node(key));
+}
+
 KernelType kernel_from(const std::string& s) {
   return s == "wendland_c2" ? KernelType::WendlandC2 : s == "quintic_spline" ? KernelType::QuinticSpline
                                                                               : KernelType::CubicSpline;
@@ -22,8 +42,9 @@ KernelType kernel_from(const std::string& s) {
 void read_case_table(CaseReader& top, CaseDraft& d) {
   CaseReader r(top.table("case", true), d.file, "case");
   d.c.name = r.string("name");
-  if (d.c.name.empty() || d.c.name.find_first_of("/\\ \t") != std::string::npos)
-    r.fail("name", "expected a non-empty name without spaces or slashes");
+  if (!valid_case_name(d.c.name))
+    r.fail("name", "expected 1 to " + std::to_string(kMaxNameLength) + " letters, digits, '_', '-', '.' or '+', not "
+                   "starting with '.' or '-' (it names the run directory), got \"" + shown(d.c.name) + "\"");
   d.c.description = r.string("description", "");
   const long dim = r.integer("dimension");
   if (dim < 1 || dim > 3) r.fail("dimension", "expected 1, 2 or 3, got " + std::to_string(dim));
@@ -86,8 +107,13 @@ void read_time_and_output(CaseReader& top, CaseDraft& d) {
   c.output.checkpoint_interval = r.non_negative("checkpoint_interval", 0.0);
   c.output.checkpoint_keep = static_cast<int>(r.positive_integer("checkpoint_keep", c.output.checkpoint_keep));
   c.output.fields = r.strings("fields", c.output.fields);
+  bound_outputs(r, "monitor_interval", c.end_time, c.output.monitor_interval, kMaxRows, "monitor rows");
+  bound_outputs(r, "extract_interval", c.end_time, c.output.extract_interval, kMaxFiles, "extract files");
+  bound_outputs(r, "checkpoint_interval", c.end_time, c.output.checkpoint_interval, kMaxFiles, "checkpoints");
   r.finish();
   c.visualisation = parse_visualisation(top.table("visualisation", false), d.file);
+  CaseReader v(top.table("visualisation", false), d.file, "visualisation");
+  bound_outputs(v, "interval", c.end_time, c.visualisation.interval, kMaxFiles, "frames per pipeline");
 }
 
 // The region and axis of the two-phase monitors (monitors/two_phase.hpp).

@@ -135,6 +135,13 @@ class Builder {
   std::uniform_real_distribution<double> jitter_;
 };
 
+// In double: the product of counts overflows an integer before it is checked.
+double lattice_sites(const Scene& sc) {
+  double sites = 1;
+  for (int k = 0; k < sc.dimension; ++k) sites *= std::floor((sc.upper[k] - sc.lower[k]) / sc.options.spacing + 1e-6);
+  return sites;
+}
+
 bool in_part(const Bounds& part, const double* x, int dimension) {
   for (int k = 0; k < dimension; ++k)
     if (x[k] < part.lower[k] || x[k] >= part.upper[k]) return false;
@@ -148,8 +155,7 @@ void place_lattice(Case& c, Builder& b, const Bounds& part) {
   const double dx = sc.options.spacing;
   // The sites' index range around the part (one site wider: in_part below decides).
   int lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
-  double sites = 1;  // in double: the product of counts overflows an integer before it is checked
-  for (int k = 0; k < D; ++k) sites *= std::floor((sc.upper[k] - sc.lower[k]) / dx + 1e-6);
+  const double sites = lattice_sites(sc);
   if (!(sites <= 400'000'000.0))
     throw CaseError(c.file + ": discretisation.spacing: the domain holds " + CaseReader::fmt(sites) +
                     " lattice sites; expected at most 4e8 (at ~0.5 kB a particle, " + CaseReader::fmt(sites * 5e-7) + " GB)");
@@ -249,6 +255,12 @@ void assign_solid_loads(Case& c, bool check) {
 }
 
 }  // namespace
+
+double particle_work_estimate(const Case& c) {
+  double points = lattice_sites(c.scene);
+  for (const auto& g : c.geometry) points += g.shape->point_estimate(c.scene.options.spacing);
+  return points;
+}
 
 Bounds domain_bounds(const Scene& sc) { return Bounds{sc.dimension, sc.lower, sc.upper}; }
 

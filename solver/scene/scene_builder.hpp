@@ -14,6 +14,9 @@ void build_particles(Case& c);
 // particles, the loads take some) then see only that share.
 void build_particles(Case& c, const Bounds& part);
 Bounds domain_bounds(const Scene& sc);
+// The points build_particles would visit: the domain's lattice sites and the points of the shapes
+// with their own layout (in double: it may be far beyond what could be built).
+double particle_work_estimate(const Case& c);
 
 // A periodic cube of edge `length` filled with one fluid on a lattice of `per_axis` sites per axis,
 // support = support_per_spacing spacings (cubic spline), carrying a shear wave

@@ -33,6 +33,8 @@ class Shape {
   // volume it stands for); the others take the lattice sites they contain.
   virtual bool places_points() const { return false; }
   virtual std::vector<LayoutPoint> points(double /*spacing*/) const { return {}; }
+  // How many points `points` would place, before placing them.
+  virtual double point_estimate(double /*spacing*/) const { return 0; }
 };
 
 std::shared_ptr<const Shape> make_box(const Bounds& box);

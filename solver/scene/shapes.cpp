@@ -35,6 +35,10 @@ class SphereShape final : public Shape {
   std::vector<LayoutPoint> points(double spacing) const override {
     return concentric_ ? concentric_points(c_, r_, spacing, D_) : std::vector<LayoutPoint>{};
   }
+  // Shells of one spacing: about the volume in spacings, (R / dx)^D times the unit ball's volume.
+  double point_estimate(double spacing) const override {
+    return concentric_ ? std::pow(r_ / spacing, D_) * (D_ == 1 ? 2 : D_ == 2 ? M_PI : 4 * M_PI / 3) : 0;
+  }
 
  private:
   std::array<double, 3> c_;
