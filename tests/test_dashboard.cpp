@@ -312,6 +312,14 @@ TEST(RunControl, RequestsParseOrRefuseWithTheReason) {
   ASSERT_EQ(rejected.size(), 1u);
   EXPECT_NE(rejected[0].find("req_zzz.json"), std::string::npos);
   EXPECT_TRUE(fs::is_empty(run.dir / "control"));
+  // An output interval longer than the run (1e308 s once overflowed the output clocks).
+  ControlRequest c{ControlRequest::Action::Cadence};
+  c.monitor_interval = 1e308;
+  EXPECT_NE(cadence_problem(c, 1e-4, 1).find("monitor_interval: 1e+308 s is longer than the run"), std::string::npos);
+  c.monitor_interval = 1e-9;
+  EXPECT_NE(cadence_problem(c, 1e-4, 1).find("shorter"), std::string::npos);
+  c.monitor_interval = 0.5;
+  EXPECT_EQ(cadence_problem(c, 1e-4, 1), "");
   // The token is the owner's alone.
   EXPECT_EQ(fs::status(run.dir / "token").permissions() & (fs::perms::group_all | fs::perms::others_all), fs::perms::none);
 }
