@@ -4,6 +4,7 @@
 // are served at once; and the run's side: control requests in order, status.json.
 #include <atomic>
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -268,6 +269,44 @@ TEST(RunWatcher, ARunWhoseProcessIsGoneIsLost) {
   j["pid"] = child;  // a process that has ended
   std::ofstream(run.dir / "status.json") << j.dump();
   RunWatcher w(run.dir.string());
+  w.poll();
+  EXPECT_EQ(w.snapshot()["status"]["state"], "lost");
+}
+
+TEST(RunWatcher, AKilledRunIsLostInItsStatusFileToo) {
+  FakeRun run("killed");
+  int ready[2];
+  ASSERT_EQ(::pipe(ready), 0);
+  const pid_t child = ::fork();
+  if (child == 0) {  // a run that writes its status, then is killed before its last word
+    run.set_state("running");
+    [[maybe_unused]] auto n = ::write(ready[1], "x", 1);
+    for (;;) ::pause();
+  }
+  ASSERT_GT(child, 0);
+  char c;
+  ASSERT_EQ(::read(ready[0], &c, 1), 1);
+  ::kill(child, SIGKILL);
+  ::waitpid(child, nullptr, 0);
+  ::close(ready[0]), ::close(ready[1]);
+  auto on_disk = [&] { return nlohmann::json::parse(std::ifstream(run.dir / "status.json"))["state"].get<std::string>(); };
+  EXPECT_EQ(on_disk(), "running");  // what it left
+  RunWatcher w(run.dir.string());
+  w.poll();
+  EXPECT_EQ(w.snapshot()["status"]["state"], "lost");
+  EXPECT_EQ(on_disk(), "lost");  // for every later reader too
+  EXPECT_NE(w.snapshot()["status"]["diagnostic"].get<std::string>().find(std::to_string(child)), std::string::npos);
+}
+
+TEST(RunWatcher, ARunWhosePidIsNowAnothersIsLost) {
+  FakeRun run("reused");  // written by this process: alive, and its start time recorded
+  RunWatcher w(run.dir.string());
+  w.poll();
+  EXPECT_EQ(w.snapshot()["status"]["state"], "running");
+  auto j = nlohmann::json::parse(std::ifstream(run.dir / "status.json"));
+  EXPECT_GT(j["pid_start"].get<long>(), 0);
+  j["pid_start"] = j["pid_start"].get<long>() - 1;  // the same pid, another process
+  std::ofstream(run.dir / "status.json") << j.dump();
   w.poll();
   EXPECT_EQ(w.snapshot()["status"]["state"], "lost");
 }
