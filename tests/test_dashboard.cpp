@@ -136,6 +136,12 @@ TEST(Dashboard, ServesOnlyTheRunsImagesExtractsAndRecords) {
   // A link inside images/ that leads out of the run directory.
   fs::create_symlink(s.run.dir / "token", s.run.dir / "images" / "phases" / "leak.png");
   EXPECT_EQ(status_of(s, "/run/images/phases/leak.png"), 403);
+  // Nor the token under another name: a hard link to it placed in images/.
+  fs::create_hard_link(s.run.dir / "token", s.run.dir / "images" / "phases" / "3d_000001.png");
+  auto linked = s.client().Get("/run/images/phases/3d_000001.png");
+  ASSERT_TRUE(linked);
+  EXPECT_EQ(linked->status, 403);
+  EXPECT_EQ(linked->body.find(s.run.token), std::string::npos);
   // The static front-end directory does not exist here: / says so rather than failing.
   EXPECT_EQ(status_of(s, "/../../etc/passwd"), 404);
 }

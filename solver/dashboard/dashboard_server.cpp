@@ -16,6 +16,7 @@
 
 
 #include "dashboard/run_control.hpp"
+#include "dashboard/run_files.hpp"
 #include "dashboard/run_status.hpp"
 #include "dashboard/run_watcher.hpp"
 
@@ -33,45 +34,6 @@ std::string web_directory() {
 }
 
 namespace {
-
-const char* content_type(const fs::path& p) {
-  const std::string e = p.extension().string();
-  if (e == ".png") return "image/png";
-  if (e == ".vtp" || e == ".pvd") return "application/octet-stream";
-  if (e == ".csv") return "text/csv";
-  if (e == ".json") return "application/json";
-  return "text/plain; charset=utf-8";
-}
-
-// True when `p` (relative to the run directory) is in images/ or extracts/, or one of the run's
-// text files.
-bool allowed(const fs::path& p) {
-  static const std::set<std::string> files{"monitors.csv", "log.txt", "summary.json", "case.resolved.toml", "status.json"};
-  if (p.empty()) return false;
-  const std::string top = p.begin()->string();
-  const auto depth = std::distance(p.begin(), p.end());
-  return ((top == "images" || top == "extracts") && depth > 1) || (files.count(top) && depth == 1);
-}
-
-// The file under the run directory that `rel` names, or "" when it may not be served: only what
-// allowed() lets through, no '..', and the same again once links are followed (a link may not
-// lead out of the run directory, nor to its token).
-fs::path servable(const fs::path& run, const std::string& rel) {
-  if (rel.empty() || rel.find('\0') != std::string::npos || rel.find('\\') != std::string::npos || rel.front() == '/')
-    return {};
-  const fs::path p(rel);
-  for (const auto& part : p)
-    if (part == ".." || part == "." || part.empty()) return {};
-  if (!allowed(p)) return {};
-  std::error_code ec;
-  const fs::path root = fs::canonical(run, ec);
-  if (ec) return {};
-  const fs::path full = fs::weakly_canonical(run / p, ec);
-  if (ec) return {};
-  const fs::path inside = full.lexically_relative(root);
-  if (inside.empty() || *inside.begin() == ".." || !allowed(inside)) return {};
-  return full;
-}
 
 std::string not_built_page() {
   return "<!doctype html><title>poresph</title><p>This poresph was built without its web front-end "
@@ -184,19 +146,14 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
   });
 
   d.http.Get(R"(/run/(.+))", [&d](const httplib::Request& req, httplib::Response& res) {
-    const fs::path p = servable(d.opt.run_dir, req.matches[1].str());
-    if (p.empty()) return json_error(res, 403, "not a file of the run's images, extracts or records");
-    std::error_code ec;
-    const std::uintmax_t size = fs::file_size(p, ec);
-    auto in = std::make_shared<std::ifstream>(p, std::ios::binary);
-    if (ec || !*in || fs::is_directory(p)) return json_error(res, 404, "no such file in the run directory");
+    auto f = std::make_shared<RunFile>(d.opt.run_dir, req.matches[1].str());
+    if (f->status() == 403) return json_error(res, 403, "not a file of the run's images, extracts or records");
+    if (f->status() != 200) return json_error(res, 404, "no such file in the run directory");
     // Streamed in 64 KiB pieces: a large extract never sits whole in the solver's memory.
-    res.set_content_provider(static_cast<size_t>(size), content_type(p),
-                             [in](size_t offset, size_t length, httplib::DataSink& sink) {
+    res.set_content_provider(static_cast<size_t>(f->size()), f->content_type(),
+                             [f](size_t offset, size_t length, httplib::DataSink& sink) {
                                std::vector<char> buf(std::min<size_t>(length, 64 * 1024));
-                               in->seekg(static_cast<std::streamoff>(offset));
-                               in->read(buf.data(), static_cast<std::streamsize>(buf.size()));
-                               const auto got = static_cast<size_t>(in->gcount());
+                               const size_t got = f->read(buf.data(), buf.size(), offset);
                                return got > 0 && sink.write(buf.data(), got);
                              });
   });
