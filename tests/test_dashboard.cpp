@@ -4,6 +4,7 @@
 // are served at once; and the run's side: control requests in order, status.json.
 #include <atomic>
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -16,66 +17,8 @@
 #include <unistd.h>
 
 #include "app/output_clock.hpp"
-#include "dashboard/dashboard_server.hpp"
-#include "dashboard/run_control.hpp"
-#include "dashboard/run_status.hpp"
-#include "dashboard/run_watcher.hpp"
+#include "dashboard_fixture.hpp"
 
-using namespace psph;
-namespace fs = std::filesystem;
-
-namespace {
-
-// A run directory as a live run leaves it: status, two monitor rows, a frame, an extract, a token.
-struct FakeRun {
-  fs::path dir;
-  std::string token;
-  explicit FakeRun(const std::string& name, const std::string& state = "running") {
-    dir = fs::temp_directory_path() / ("poresph_dashboard_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    for (const char* sub : {"images/phases", "extracts", "checkpoints"}) fs::create_directories(dir / sub);
-    std::ofstream(dir / "case.resolved.toml") << "[case]\nname = \"fake\"\n";
-    std::ofstream(dir / "checkpoints" / "step_0000000010.ckpt") << "secret state";
-    std::ofstream(dir / "monitors.csv") << "step,time,kinetic_energy\n0,0,0\n10,0.001,2.5e-7\n";
-    std::ofstream(dir / "images" / "phases" / "3d_000000.png") << "png bytes";
-    std::ofstream(dir / "images" / "frames.csv") << "frame,step,time\n0,0,0\n";
-    std::ofstream(dir / "extracts" / "particles_000000.vtp") << "<VTKFile/>";
-    std::ofstream(dir / "extracts" / "particles.pvd")
-        << "<VTKFile>\n<Collection>\n    <DataSet timestep=\"0\" file=\"particles_000000.vtp\"/>\n</Collection>\n</VTKFile>\n";
-    set_state(state);
-    token = create_run_token(dir.string());
-  }
-  ~FakeRun() { fs::remove_all(dir); }
-  void set_state(const std::string& state) {
-    RunStatus s;
-    s.case_name = "fake", s.backend = "cpu", s.device = "test", s.precision = "double";
-    s.state = state, s.step = 10, s.time = 0.001, s.end_time = 1;
-    StatusFile(dir.string()).write(s);
-  }
-  void append_row(const std::string& row) { std::ofstream(dir / "monitors.csv", std::ios::app) << row << std::flush; }
-};
-
-struct Served {
-  FakeRun run;
-  DashboardServer server;
-  explicit Served(const std::string& name, const std::string& state = "running")
-      : run(name, state), server(DashboardOptions{run.dir.string(), "/nonexistent", "127.0.0.1", 0, 0.05}) {}
-  httplib::Client client() const { return httplib::Client("127.0.0.1", server.port()); }
-};
-
-int post_control(Served& s, const std::string& body, const std::string* token) {
-  httplib::Headers h;
-  if (token) h.emplace("X-Poresph-Token", *token);
-  auto r = s.client().Post("/api/control", h, body, "application/json");
-  return r ? r->status : -1;
-}
-
-int status_of(Served& s, const std::string& path) {
-  auto r = s.client().Get(path.c_str());
-  return r ? r->status : -1;
-}
-
-}  // namespace
 
 TEST(Dashboard, ControlNeedsTheRunsToken) {
   Served s("token");
@@ -135,6 +78,12 @@ TEST(Dashboard, ServesOnlyTheRunsImagesExtractsAndRecords) {
   // A link inside images/ that leads out of the run directory.
   fs::create_symlink(s.run.dir / "token", s.run.dir / "images" / "phases" / "leak.png");
   EXPECT_EQ(status_of(s, "/run/images/phases/leak.png"), 403);
+  // Nor the token under another name: a hard link to it placed in images/.
+  fs::create_hard_link(s.run.dir / "token", s.run.dir / "images" / "phases" / "3d_000001.png");
+  auto linked = s.client().Get("/run/images/phases/3d_000001.png");
+  ASSERT_TRUE(linked);
+  EXPECT_EQ(linked->status, 403);
+  EXPECT_EQ(linked->body.find(s.run.token), std::string::npos);
   // The static front-end directory does not exist here: / says so rather than failing.
   EXPECT_EQ(status_of(s, "/../../etc/passwd"), 404);
 }
@@ -158,10 +107,8 @@ TEST(Dashboard, MalformedRequestsGetFourHundredsAndTheServerCarriesOn) {
                                 std::string("GET /api/state HTTP/9.9\r\nHost: x\r\n\r\n"),
                                 std::string("POST /api/control HTTP/1.1\r\nContent-Length: 99999999\r\n\r\n"),
                                 std::string(10000, 'A') + "\r\n\r\n"}) {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in a{};
-    a.sin_family = AF_INET, a.sin_port = htons(static_cast<uint16_t>(s.server.port())), a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a), 0);
+    const int fd = connect_from(s.server.port());
+    ASSERT_GE(fd, 0);
     ASSERT_GT(::send(fd, raw.data(), raw.size(), MSG_NOSIGNAL), 0);
     ::shutdown(fd, SHUT_WR);
     char buf[256] = {};
@@ -206,7 +153,7 @@ TEST(Dashboard, ManyReadersGetTheNewRowsAndOneThatLeavesHarmsNone) {
   Served s("readers");
   // A reader that leaves at once (a closed tab).
   read_events(s.server.port(), "/api/events?since=0", "event: status", std::chrono::milliseconds(3000));
-  constexpr int kReaders = 40;
+  constexpr int kReaders = 7;  // with the one that left, as many as one address may have
   std::vector<std::string> seen(kReaders);
   std::vector<std::thread> readers;
   for (int k = 0; k < kReaders; ++k)
@@ -272,6 +219,44 @@ TEST(RunWatcher, ARunWhoseProcessIsGoneIsLost) {
   EXPECT_EQ(w.snapshot()["status"]["state"], "lost");
 }
 
+TEST(RunWatcher, AKilledRunIsLostInItsStatusFileToo) {
+  FakeRun run("killed");
+  int ready[2];
+  ASSERT_EQ(::pipe(ready), 0);
+  const pid_t child = ::fork();
+  if (child == 0) {  // a run that writes its status, then is killed before its last word
+    run.set_state("running");
+    [[maybe_unused]] auto n = ::write(ready[1], "x", 1);
+    for (;;) ::pause();
+  }
+  ASSERT_GT(child, 0);
+  char c;
+  ASSERT_EQ(::read(ready[0], &c, 1), 1);
+  ::kill(child, SIGKILL);
+  ::waitpid(child, nullptr, 0);
+  ::close(ready[0]), ::close(ready[1]);
+  auto on_disk = [&] { return nlohmann::json::parse(std::ifstream(run.dir / "status.json"))["state"].get<std::string>(); };
+  EXPECT_EQ(on_disk(), "running");  // what it left
+  RunWatcher w(run.dir.string());
+  w.poll();
+  EXPECT_EQ(w.snapshot()["status"]["state"], "lost");
+  EXPECT_EQ(on_disk(), "lost");  // for every later reader too
+  EXPECT_NE(w.snapshot()["status"]["diagnostic"].get<std::string>().find(std::to_string(child)), std::string::npos);
+}
+
+TEST(RunWatcher, ARunWhosePidIsNowAnothersIsLost) {
+  FakeRun run("reused");  // written by this process: alive, and its start time recorded
+  RunWatcher w(run.dir.string());
+  w.poll();
+  EXPECT_EQ(w.snapshot()["status"]["state"], "running");
+  auto j = nlohmann::json::parse(std::ifstream(run.dir / "status.json"));
+  EXPECT_GT(j["pid_start"].get<long>(), 0);
+  j["pid_start"] = j["pid_start"].get<long>() - 1;  // the same pid, another process
+  std::ofstream(run.dir / "status.json") << j.dump();
+  w.poll();
+  EXPECT_EQ(w.snapshot()["status"]["state"], "lost");
+}
+
 TEST(RunWatcher, AnOlderRunDirectoryShowsItsSummary) {
   FakeRun run("summary");
   fs::remove(run.dir / "status.json");
@@ -312,6 +297,14 @@ TEST(RunControl, RequestsParseOrRefuseWithTheReason) {
   ASSERT_EQ(rejected.size(), 1u);
   EXPECT_NE(rejected[0].find("req_zzz.json"), std::string::npos);
   EXPECT_TRUE(fs::is_empty(run.dir / "control"));
+  // An output interval longer than the run (1e308 s once overflowed the output clocks).
+  ControlRequest c{ControlRequest::Action::Cadence};
+  c.monitor_interval = 1e308;
+  EXPECT_NE(cadence_problem(c, 1e-4, 1).find("monitor_interval: 1e+308 s is longer than the run"), std::string::npos);
+  c.monitor_interval = 1e-9;
+  EXPECT_NE(cadence_problem(c, 1e-4, 1).find("shorter"), std::string::npos);
+  c.monitor_interval = 0.5;
+  EXPECT_EQ(cadence_problem(c, 1e-4, 1), "");
   // The token is the owner's alone.
   EXPECT_EQ(fs::status(run.dir / "token").permissions() & (fs::perms::group_all | fs::perms::others_all), fs::perms::none);
 }

@@ -252,11 +252,10 @@ void RunDriver::take_requests() {
     else if (r.action == A::Resume && paused_) paused_ = false, log("resumed" + at);
     else if (r.action == A::Stop) stop_ = true;
     if (r.action != A::Cadence) continue;
-    const double t = engine_->time(), shortest = cadence_floor(engine_->last_dt(), c_.end_time);
-    bool too_short = false;
-    for (double v : {r.monitor_interval, r.extract_interval, r.visualisation_interval}) too_short |= v > 0 && v < shortest;
-    if (too_short) {
-      log("output cadence: ignored a request for an interval under " + std::to_string(shortest) + " s");
+    const double t = engine_->time();
+    const std::string why = cadence_problem(r, engine_->last_dt(), c_.end_time);
+    if (!why.empty()) {
+      log("output cadence: ignored a request: " + why);
       continue;
     }
     if (r.monitor_interval > 0) dt_mon_ = r.monitor_interval, mon_.set_interval(dt_mon_, t);

@@ -15,9 +15,15 @@
 #include <vector>
 
 
+#include "dashboard/accepted_sockets.hpp"
+#include "dashboard/request_gate.hpp"
 #include "dashboard/run_control.hpp"
+#include "dashboard/run_files.hpp"
 #include "dashboard/run_status.hpp"
 #include "dashboard/run_watcher.hpp"
+#include "dashboard/stream_slots.hpp"
+
+#include <sys/socket.h>
 
 namespace psph {
 namespace fs = std::filesystem;
@@ -34,49 +40,17 @@ std::string web_directory() {
 
 namespace {
 
-const char* content_type(const fs::path& p) {
-  const std::string e = p.extension().string();
-  if (e == ".png") return "image/png";
-  if (e == ".vtp" || e == ".pvd") return "application/octet-stream";
-  if (e == ".csv") return "text/csv";
-  if (e == ".json") return "application/json";
-  return "text/plain; charset=utf-8";
-}
-
-// True when `p` (relative to the run directory) is in images/ or extracts/, or one of the run's
-// text files.
-bool allowed(const fs::path& p) {
-  static const std::set<std::string> files{"monitors.csv", "log.txt", "summary.json", "case.resolved.toml", "status.json"};
-  if (p.empty()) return false;
-  const std::string top = p.begin()->string();
-  const auto depth = std::distance(p.begin(), p.end());
-  return ((top == "images" || top == "extracts") && depth > 1) || (files.count(top) && depth == 1);
-}
-
-// The file under the run directory that `rel` names, or "" when it may not be served: only what
-// allowed() lets through, no '..', and the same again once links are followed (a link may not
-// lead out of the run directory, nor to its token).
-fs::path servable(const fs::path& run, const std::string& rel) {
-  if (rel.empty() || rel.find('\0') != std::string::npos || rel.find('\\') != std::string::npos || rel.front() == '/')
-    return {};
-  const fs::path p(rel);
-  for (const auto& part : p)
-    if (part == ".." || part == "." || part.empty()) return {};
-  if (!allowed(p)) return {};
-  std::error_code ec;
-  const fs::path root = fs::canonical(run, ec);
-  if (ec) return {};
-  const fs::path full = fs::weakly_canonical(run / p, ec);
-  if (ec) return {};
-  const fs::path inside = full.lexically_relative(root);
-  if (inside.empty() || *inside.begin() == ".." || !allowed(inside)) return {};
-  return full;
-}
-
 std::string not_built_page() {
   return "<!doctype html><title>poresph</title><p>This poresph was built without its web front-end "
          "(web/, needs npm at build time). The run's state is at <a href=\"/api/state\">/api/state</a>.</p>";
 }
+
+// Where a page's event stream is: the last event sent, its connection, when it last sent.
+struct StreamCursor {
+  long last = 0;
+  int socket = -1;
+  std::chrono::steady_clock::time_point sent = std::chrono::steady_clock::now();
+};
 
 void json_error(httplib::Response& res, int code, const std::string& msg) {
   res.status = code;
@@ -89,21 +63,55 @@ struct DashboardServer::Impl {
   DashboardOptions opt;
   httplib::Server http;
   RunWatcher watcher;
+  StreamSlots slots;
   std::thread serve_thread, poll_thread;
   std::atomic<bool> stopping{false};
   std::atomic<int> streams{0};  // open event streams: the run directory is watched only for them
   std::mutex m;                 // with cv: the poll thread's sleep, stop() waiting for the streams
   std::condition_variable cv;
-  int port = 0;
+  int port = 0, listener = -1;
 
-  explicit Impl(const DashboardOptions& o) : opt(o), watcher(o.run_dir) {}
+  explicit Impl(const DashboardOptions& o) : opt(o), watcher(o.run_dir), slots(o.max_streams, o.max_streams_per_client) {}
+  bool send_events(StreamCursor& c, httplib::DataSink& sink);
 };
+
+// Sleeps until an event (or the server's stop) wakes it, at most a second: then looks whether the
+// page has gone (its stream's slot is free again within a second of a closed tab), and every 15 s
+// sends a comment that keeps the connection open through proxies. False: the page has gone.
+bool DashboardServer::Impl::send_events(StreamCursor& c, httplib::DataSink& sink) {
+  const bool ending = stopping || watcher.stopped();
+  const auto events = watcher.events_after(c.last, std::chrono::milliseconds(ending ? 0 : 1000));
+  std::string out;
+  for (const DashboardEvent& e : events) {
+    out += "id: " + std::to_string(e.id) + "\nevent: " + e.type + "\ndata: " +
+           e.data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n\n";
+    c.last = e.id;
+  }
+  const auto now = std::chrono::steady_clock::now();
+  if (out.empty() && !ending) {
+    if (peer_left(c.socket)) return false;
+    if (now - c.sent < std::chrono::seconds(15)) return true;
+    out = ": keep-alive\n\n";
+  }
+  if (!out.empty() && !sink.write(out.data(), out.size())) return false;  // the browser left
+  c.sent = now;
+  if (ending) sink.done();  // the run's last events are out
+  return true;
+}
 
 DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_unique<Impl>(opt)) {
   Impl& d = *impl_;
   if (!fs::is_directory(opt.run_dir)) throw std::runtime_error(opt.run_dir + ": not a run directory");
-  const int threads = opt.threads;
-  d.http.new_task_queue = [threads] { return new httplib::ThreadPool(static_cast<size_t>(threads)); };
+  // Called once listening, when d.port is known.
+  d.http.new_task_queue = [&d] {
+    GateLimits g;
+    g.deadline = d.opt.request_deadline;
+    return new RequestGate(static_cast<std::size_t>(d.opt.threads), d.port, g);
+  };
+  d.http.set_socket_options([&d](int fd) {
+    httplib::default_socket_options(fd);
+    d.listener = fd;
+  });
   const std::string web = opt.web_dir.empty() ? web_directory() : opt.web_dir;
   if (web.empty() || !d.http.set_mount_point("/", web))
     d.http.Get("/", [](const httplib::Request&, httplib::Response& res) { res.set_content(not_built_page(), "text/html"); });
@@ -126,25 +134,18 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
       return json_error(res, 400, "since: expected an event number");
     }
     res.set_header("Cache-Control", "no-store");
-    auto last = std::make_shared<long>(since);
+    const std::string client = req.remote_addr;
+    if (const std::string full = d.slots.take(client); !full.empty()) {
+      res.set_header("Retry-After", "5");
+      return json_error(res, 503, full + ": try again later");
+    }
+    auto cursor = std::make_shared<StreamCursor>(StreamCursor{since, connection_from(d.port, client, req.remote_port)});
     d.watcher.poll();
     ++d.streams;
-    res.set_chunked_content_provider("text/event-stream", [&d, last](size_t, httplib::DataSink& sink) {
-      const bool ending = d.stopping || d.watcher.stopped();
-      // Sleeps until an event (or the server's stop) wakes it, at most 15 s: then a comment keeps
-      // the connection open through proxies.
-      const auto events = d.watcher.events_after(*last, std::chrono::milliseconds(ending ? 0 : 15000));
-      std::string out;
-      for (const DashboardEvent& e : events) {
-        out += "id: " + std::to_string(e.id) + "\nevent: " + e.type + "\ndata: " +
-               e.data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n\n";
-        *last = e.id;
-      }
-      if (out.empty() && !ending) out = ": keep-alive\n\n";
-      if (!out.empty() && !sink.write(out.data(), out.size())) return false;  // the browser left
-      if (ending) sink.done();  // the run's last events are out
-      return true;
-    }, [&d](bool) {
+    res.set_chunked_content_provider("text/event-stream", [&d, cursor](size_t, httplib::DataSink& sink) {
+      return d.send_events(*cursor, sink);
+    }, [&d, client](bool) {
+      d.slots.give_back(client);
       --d.streams;
       d.cv.notify_all();
     });
@@ -169,11 +170,8 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
     const nlohmann::json st = d.watcher.snapshot()["status"];
     if (st.is_null() || !status_from_json(st).live())
       return json_error(res, 409, "the run is not running (state " + (st.is_null() ? std::string("unknown") : st["state"].get<std::string>()) + ")");
-    const double shortest = cadence_floor(st["dt"].get<double>(), st["end_time"].get<double>());
-    for (double v : {r.monitor_interval, r.extract_interval, r.visualisation_interval})
-      if (v > 0 && v < shortest)
-        return json_error(res, 400, "cadence: an interval of " + std::to_string(v) + " s is shorter than the run allows (" +
-                                        std::to_string(shortest) + " s: a time step, and a millionth of the run)");
+    const std::string why = cadence_problem(r, st["dt"].get<double>(), st["end_time"].get<double>());
+    if (!why.empty()) return json_error(res, 400, why);
     try {
       post_control_request(d.opt.run_dir, r);
     } catch (const std::exception& e) {
@@ -184,19 +182,14 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
   });
 
   d.http.Get(R"(/run/(.+))", [&d](const httplib::Request& req, httplib::Response& res) {
-    const fs::path p = servable(d.opt.run_dir, req.matches[1].str());
-    if (p.empty()) return json_error(res, 403, "not a file of the run's images, extracts or records");
-    std::error_code ec;
-    const std::uintmax_t size = fs::file_size(p, ec);
-    auto in = std::make_shared<std::ifstream>(p, std::ios::binary);
-    if (ec || !*in || fs::is_directory(p)) return json_error(res, 404, "no such file in the run directory");
+    auto f = std::make_shared<RunFile>(d.opt.run_dir, req.matches[1].str());
+    if (f->status() == 403) return json_error(res, 403, "not a file of the run's images, extracts or records");
+    if (f->status() != 200) return json_error(res, 404, "no such file in the run directory");
     // Streamed in 64 KiB pieces: a large extract never sits whole in the solver's memory.
-    res.set_content_provider(static_cast<size_t>(size), content_type(p),
-                             [in](size_t offset, size_t length, httplib::DataSink& sink) {
+    res.set_content_provider(static_cast<size_t>(f->size()), f->content_type(),
+                             [f](size_t offset, size_t length, httplib::DataSink& sink) {
                                std::vector<char> buf(std::min<size_t>(length, 64 * 1024));
-                               in->seekg(static_cast<std::streamoff>(offset));
-                               in->read(buf.data(), static_cast<std::streamsize>(buf.size()));
-                               const auto got = static_cast<size_t>(in->gcount());
+                               const size_t got = f->read(buf.data(), buf.size(), offset);
                                return got > 0 && sink.write(buf.data(), got);
                              });
   });
@@ -217,7 +210,7 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
     }
     return httplib::Server::HandlerResponse::Unhandled;
   });
-  d.http.set_payload_max_length(64 * 1024);
+  d.http.set_payload_max_length(4096);  // a control request is a few dozen bytes
   // cpp-httplib wakes every 10 ms in its accept loop and on idle keep-alive connections, each
   // wake-up a preemption of the solver's threads: block in accept, one request per connection.
   d.http.set_idle_interval(0, 0);
@@ -233,6 +226,8 @@ DashboardServer::DashboardServer(const DashboardOptions& opt) : impl_(std::make_
                                std::to_string(opt.port) + " (in use, or not an address of this machine)");
     d.port = opt.port;
   }
+  // cpp-httplib listens with a backlog of 5 (built in): a burst of page loads overflowed it.
+  if (d.listener >= 0) ::listen(d.listener, opt.listen_backlog);
   d.serve_thread = std::thread([&d] { d.http.listen_after_bind(); });
   // stop() only stops a server that is listening: wait until it is (bounded).
   for (int k = 0; k < 500 && !d.http.is_running(); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(2));

@@ -50,6 +50,24 @@ ControlRequest control_request_from_json(const nlohmann::json& j) {
   return r;
 }
 
+std::string cadence_problem(const ControlRequest& r, double dt, double end_time) {
+  const double shortest = cadence_floor(dt, end_time);
+  auto g = [](double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", v);
+    return std::string(b);
+  };
+  for (auto [key, v] : {std::pair{"monitor_interval", r.monitor_interval}, std::pair{"extract_interval", r.extract_interval},
+                        std::pair{"visualisation_interval", r.visualisation_interval}}) {
+    if (v == 0) continue;  // unchanged
+    if (!(v >= shortest))
+      return std::string(key) + ": " + g(v) + " s is shorter than the run allows (" + g(shortest) +
+             " s: a time step, and a millionth of the run)";
+    if (!(v <= end_time)) return std::string(key) + ": " + g(v) + " s is longer than the run (it ends at " + g(end_time) + " s)";
+  }
+  return "";
+}
+
 nlohmann::json to_json(const ControlRequest& r) {
   nlohmann::json j = {{"action", action_name(r.action)}};
   if (r.monitor_interval > 0) j["monitor_interval"] = r.monitor_interval;

@@ -28,6 +28,10 @@ const char* action_name(ControlRequest::Action a);
 // The shortest output interval a run takes: its time step, and a millionth of the run (a cadence
 // request below it is refused).
 inline double cadence_floor(double dt, double end_time) { return dt > 1e-6 * end_time ? dt : 1e-6 * end_time; }
+// Why a run at time step `dt` that ends at `end_time` cannot take the cadence request `r`, or "":
+// each interval given must be at least cadence_floor() and at most the run's end time (a longer
+// one would mean never; 1e308 s once overflowed the output clocks' arithmetic).
+std::string cadence_problem(const ControlRequest& r, double dt, double end_time);
 
 // Writes one request into run_dir/control/ (temporary file, then rename; names sort by time).
 void post_control_request(const std::string& run_dir, const ControlRequest& r);

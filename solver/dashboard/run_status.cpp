@@ -1,7 +1,10 @@
 #include "dashboard/run_status.hpp"
 
+#include <cerrno>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <unistd.h>
 
@@ -30,6 +33,7 @@ nlohmann::json to_json(const RunStatus& s) {
           {"pipelines", s.pipelines},
           {"checkpoints", s.checkpoints},
           {"pid", s.pid},
+          {"pid_start", s.pid_start},
           {"updated", s.updated}};
 }
 
@@ -50,7 +54,49 @@ RunStatus status_from_json(const nlohmann::json& j) {
   get("monitor_interval", s.monitor_interval), get("extract_interval", s.extract_interval);
   get("visualisation_interval", s.visualisation_interval), get("extracts", s.extracts), get("pipelines", s.pipelines);
   get("checkpoints", s.checkpoints), get("pid", s.pid), get("updated", s.updated);
+  if (j.contains("pid_start")) get("pid_start", s.pid_start);  // not in older run directories
   return s;
+}
+
+namespace {
+
+// When process `pid` started (field 22 of /proc/PID/stat, clock ticks after boot); 0 when unknown.
+long process_start(long pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto name_end = text.rfind(')');  // the command's name may hold spaces and parentheses
+  if (name_end == std::string::npos) return 0;
+  std::istringstream fields(text.substr(name_end + 1));
+  std::string f;
+  for (int k = 3; k <= 22 && fields >> f; ++k)
+    if (k == 22) return std::atol(f.c_str());
+  return 0;
+}
+
+}  // namespace
+
+bool writer_gone(const RunStatus& s) {
+  if (s.pid <= 0) return false;  // unknown writer: no verdict
+  if (::kill(static_cast<pid_t>(s.pid), 0) != 0 && errno == ESRCH) return true;
+  const long start = s.pid_start > 0 ? process_start(s.pid) : 0;
+  return start > 0 && start != s.pid_start;
+}
+
+bool mark_lost(const std::string& run_dir, nlohmann::json& j) {
+  const RunStatus s = status_from_json(j);
+  if (!s.live() || !writer_gone(s)) return false;
+  j["state"] = "lost";
+  j["diagnostic"] = "the run's process (pid " + std::to_string(j["pid"].get<long>()) + ") ended without a final status";
+  const std::string path = run_dir + "/status.json", tmp = path + ".lost." + std::to_string(::getpid()) + ".tmp";
+  {
+    std::ofstream o(tmp);
+    o << j.dump(1) << "\n";
+    if (!o) return true;  // a reader without write access there: lost for it alone
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) std::filesystem::remove(tmp, ec);
+  return true;
 }
 
 StatusFile::StatusFile(std::string run_dir, double period) : path_(std::move(run_dir) + "/status.json"), period_(period) {}
@@ -61,7 +107,8 @@ bool StatusFile::due() const {
 
 void StatusFile::write(RunStatus s) {
   const auto now = std::chrono::steady_clock::now();
-  s.pid = static_cast<long>(::getpid());
+  static const long own_start = process_start(::getpid());
+  s.pid = static_cast<long>(::getpid()), s.pid_start = own_start;
   s.updated = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
   {
     std::ofstream o(path_ + ".tmp");

@@ -1,10 +1,8 @@
 #include "dashboard/run_watcher.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -93,18 +91,13 @@ nlohmann::json RunWatcher::status_of_summary() const {
 void RunWatcher::poll_status() {
   const std::string text = read_file(fs::path(dir_) / "status.json");
   nlohmann::json j;
-  RunStatus s;
   try {
     j = text.empty() ? status_of_summary() : nlohmann::json::parse(text);
-    s = status_from_json(j);  // complete and well-typed
+    status_from_json(j);  // complete and well-typed (throws otherwise)
   } catch (const std::exception&) {
     return;  // none yet
   }
-  // A live state whose process has gone (killed before it could say so).
-  if (s.live() && s.pid > 0 && ::kill(static_cast<pid_t>(s.pid), 0) != 0 && errno == ESRCH) {
-    j["state"] = "lost";
-    j["diagnostic"] = "the run's process (pid " + std::to_string(j["pid"].get<long>()) + ") ended without a final status";
-  }
+  mark_lost(dir_, j);  // a live state whose process has gone (killed before it could say so)
   const std::string now = j.dump();
   if (now == status_text_) return;
   status_text_ = now;

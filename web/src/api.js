@@ -6,14 +6,19 @@ export async function fetchState() {
 }
 
 // Server-sent events after event number `since`; the browser reconnects by itself, resuming
-// after the last event it saw (Last-Event-ID).
+// after the last event it saw (Last-Event-ID). A stream the server refuses (503: it has as many
+// open as it allows) the browser gives up: asked again after 5 s.
 export function subscribe(since, handlers, onStateChange) {
+  let last = since;
   const es = new EventSource(`api/events?since=${since}`);
   for (const [type, fn] of Object.entries(handlers)) {
-    es.addEventListener(type, (e) => fn(JSON.parse(e.data)));
+    es.addEventListener(type, (e) => { last = Number(e.lastEventId) || last; fn(JSON.parse(e.data)); });
   }
   es.onopen = () => onStateChange(true);
-  es.onerror = () => onStateChange(false);
+  es.onerror = () => {
+    onStateChange(false);
+    if (es.readyState === EventSource.CLOSED) setTimeout(() => subscribe(last, handlers, onStateChange), 5000);
+  };
   return es;
 }
 
