@@ -5,7 +5,7 @@ PRESET ?= $(if $(NVCC),cuda,cpu-release)
 BUILD  := build/$(PRESET)
 JOBS   ?= $(shell nproc)
 
-.PHONY: all deps build test demo validate validate-full bench bench-accuracy clean
+.PHONY: all deps build test demo validate validate-full bench bench-accuracy fuzz clean
 
 all: build
 
@@ -39,6 +39,11 @@ bench: build
 bench-accuracy: build
 	@$(BUILD)/solver/poresph bench --accuracy --json > bench/accuracy.json
 	@/usr/bin/python3 bench/plot_accuracy.py bench/accuracy.json bench/accuracy.png
+
+# The case-reader fuzzer under clang's libFuzzer for FUZZ_SECONDS (default 600; label fuzz).
+FUZZ_SECONDS ?= 600
+fuzz:
+	@scripts/fuzz.sh $(FUZZ_SECONDS)
 
 clean:
 	rm -rf build

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "core/instability.hpp"
 #include "engine/engine.hpp"
 #include "kernels/kernel.hpp"
 #include "scene/case_file.hpp"
@@ -258,4 +259,20 @@ TEST(Engine, WallRestDensityIsTheFullInitialSum) {
     ++walls;
   }
   EXPECT_GT(walls, 300);
+}
+
+// A clock so far along that a step no longer advances it: the run stops (exit 3), it does not
+// sit at one time for ever.
+TEST(Engine, AStepThatMakesNoProgressIsAnInstability) {
+  Case c = embedded("poiseuille_2d");
+  auto e = make_engine(c.scene, "cpu");
+  Checkpoint ck = e->checkpoint();
+  ck.time = 1e20;
+  e->restore(ck);
+  try {
+    e->step(2e20);
+    ADD_FAILURE() << "a step at t = 1e20 s went on";
+  } catch (const InstabilityError& x) {
+    EXPECT_NE(std::string(x.what()).find("makes no progress"), std::string::npos) << x.what();
+  }
 }

@@ -44,7 +44,7 @@ TEST(OpenBoundary, CaseKeys) {
   expect_refused(channel, "outlet_pressure = 0.0", "outlet_pressure = 0.0\nthickness = 5.0e-5",
           "open_boundary.thickness: expected a buffer at least one support radius");
   expect_refused(channel, "outlet_pressure = 0.0\n", "", "open_boundary.outlet_pressure: missing");
-  expect_refused(channel, "inlet_pressure = 2.8e-3", "inlet_pressure = nan", "open_boundary.inlet_pressure (line 33): expected a finite pressure");
+  expect_refused(channel, "inlet_pressure = 2.8e-3", "inlet_pressure = nan", "open_boundary.inlet_pressure (line 33): expected a finite number");
 }
 
 // At the first evaluation the inlet buffer holds the inlet's fluid (mass scaled by the density
