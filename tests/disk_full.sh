@@ -38,6 +38,12 @@ if [ "$mode" = ulimit ]; then
   exit 0
 fi
 ls full/run/checkpoints/step_*.ckpt > /dev/null 2>&1 || fail "no checkpoint was written before the disk filled"
+# A disk full before the run begins: exit 5 and no run directory left.
+mkdir -p tiny && mount -t tmpfs -o size=8k tmpfs tiny || fail "cannot mount the small tmpfs"
+"$poresph" run case.toml --out tiny/run --quiet > tiny.txt 2>&1
+rc=$?
+[ $rc -eq 5 ] || fail "a run on a disk full from the start exited $rc, expected 5: $(cat tiny.txt)"
+[ -e tiny/run ] && fail "a run that could not begin left its run directory: $(ls -R tiny/run)"
 "$poresph" run case.toml --restart full/run --out restarted --quiet > restart.txt 2>&1 ||
   fail "the kept checkpoints do not restart: $(cat restart.txt)"
 grep -q "skipped a damaged" restarted/log.txt && fail "a kept checkpoint is damaged: $(cat restarted/log.txt)"

@@ -22,9 +22,10 @@ std::string seconds_text(double s) {
   return b;
 }
 
-int refuse(const std::string& what) {
+// Exit 2 (bad input) or, for a write that failed before the run began, 5.
+int refuse(const std::string& what, int code = 2) {
   std::cerr << "poresph: " << what << "\n";
-  return 2;
+  return code;
 }
 
 }  // namespace
@@ -75,6 +76,8 @@ int RunDriver::open() {
   dir_ = opt_.out.empty() ? default_run_directory(c_.name) : opt_.out;
   try {
     rd_ = std::make_unique<RunDirectory>(dir_, c_.source_text);
+  } catch (const WriteError& e) {
+    return refuse(e.what(), 5);
   } catch (const std::exception& e) {
     return refuse(e.what());
   }
@@ -82,11 +85,11 @@ int RunDriver::open() {
 }
 
 // A refusal after the run directory was made: nothing has run, so no run directory is left.
-int RunDriver::discard(const std::string& what) {
+int RunDriver::discard(const std::string& what, int code) {
   rd_.reset();
   std::error_code ec;
   std::filesystem::remove_all(dir_, ec);
-  return refuse(what);
+  return refuse(what, code);
 }
 
 // The checkpoint file given, or a run directory's newest intact one (the newer damaged ones are
@@ -141,8 +144,12 @@ int RunDriver::start() {
   base.precision = precision_name(), base.dimension = c_.scene.dimension, base.particles = engine_->particles();
   base.end_time = c_.end_time, base.extracts = extracts_, base.pipelines = insitu_->active();
   base.monitor_interval = dt_mon_, base.extract_interval = dt_ext_, base.visualisation_interval = dt_vis_;
-  supervision_ = std::make_unique<RunSupervision>(rd_->path(), base);
-  supervision_->report(*engine_, "starting", wall_now(), true);
+  try {
+    supervision_ = std::make_unique<RunSupervision>(rd_->path(), base);
+    supervision_->report(*engine_, "starting", wall_now(), true);
+  } catch (const std::exception& e) {  // the token or status.json: the disk is full or read-only
+    return discard(e.what(), 5);
+  }
   if (opt_.serve >= 0) {
     try {
       dashboard_ = std::make_unique<DashboardServer>(DashboardOptions{rd_->path(), "", opt_.bind, opt_.serve});
@@ -325,7 +332,11 @@ void RunDriver::finish() {
   } catch (const WriteError& e) {
     write_failed(e.what());
   }
-  supervision_->finish(*engine_, status_, diagnostic_, wall);
+  try {
+    supervision_->finish(*engine_, status_, diagnostic_, wall);
+  } catch (const WriteError& e) {
+    write_failed(e.what());
+  }
   if (dashboard_) {
     dashboard_->stop();  // after a last look at the run directory: its clients get the final state
     log("dashboard closed; `poresph serve " + rd_->path() + "` shows the finished run");

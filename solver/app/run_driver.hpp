@@ -31,7 +31,7 @@ class RunDriver {
   using clock = std::chrono::steady_clock;
   int open();           // engine, restart, in-situ session, run directory: 0 or 2 (nothing left behind)
   Checkpoint restart_checkpoint();
-  int discard(const std::string& what);  // refuses (2) and removes the new run directory
+  int discard(const std::string& what, int code = 2);  // refuses and removes the new run directory
   void plan_outputs();  // extract fields, output intervals and clocks
   int start();          // supervision, dashboard, the first outputs: 0 or an exit code
   void loop();          // steps to the end, a stop or an interrupt

@@ -1,5 +1,7 @@
 #include "dashboard/run_status.hpp"
 
+#include "io/durable_file.hpp"
+
 #include <cerrno>
 #include <csignal>
 #include <filesystem>
@@ -110,11 +112,7 @@ void StatusFile::write(RunStatus s) {
   static const long own_start = process_start(::getpid());
   s.pid = static_cast<long>(::getpid()), s.pid_start = own_start;
   s.updated = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
-  {
-    std::ofstream o(path_ + ".tmp");
-    o << to_json(s).dump(1) << "\n";
-  }
-  std::filesystem::rename(path_ + ".tmp", path_);
+  write_file_atomically(path_, to_json(s).dump(1) + "\n");  // a WriteError when the disk is full
   last_ = s, written_ = true, last_write_ = now;
 }
 

@@ -16,7 +16,8 @@ std::string directory_of(const std::string& path) {
 
 }  // namespace
 
-DurableFile::DurableFile(std::string path) : path_(std::move(path)), partial_(path_ + ".partial") {
+DurableFile::DurableFile(std::string path, bool sync)
+    : path_(std::move(path)), partial_(path_ + ".partial"), sync_(sync) {
   fd_ = ::open(partial_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd_ < 0) fail("cannot create the file");
 }
@@ -45,20 +46,26 @@ void DurableFile::write(const void* data, std::size_t bytes) {
 }
 
 void DurableFile::commit() {
-  if (::fsync(fd_) != 0) fail("flushing to the disk failed");
+  if (sync_ && ::fsync(fd_) != 0) fail("flushing to the disk failed");
   const int fd = fd_;
   fd_ = -1;
   if (::close(fd) != 0) fail("closing failed");
   if (::rename(partial_.c_str(), path_.c_str()) != 0) fail("renaming the finished file failed");
+  if (!sync_) return;
   // The rename itself is durable once the directory is.
   const int dir = ::open(directory_of(path_).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dir >= 0) ::fsync(dir), ::close(dir);
 }
 
-void write_file_durably(const std::string& path, const std::string& text) {
-  DurableFile f(path);
+namespace {
+void write_whole(const std::string& path, const std::string& text, bool sync) {
+  DurableFile f(path, sync);
   f.write(text);
   f.commit();
 }
+}  // namespace
+
+void write_file_durably(const std::string& path, const std::string& text) { write_whole(path, text, true); }
+void write_file_atomically(const std::string& path, const std::string& text) { write_whole(path, text, false); }
 
 }  // namespace psph

@@ -15,23 +15,27 @@ struct WriteError : std::runtime_error {
 
 class DurableFile {
  public:
-  explicit DurableFile(std::string path);
+  // `sync` false: atomic and checked, not flushed to the disk (a file rewritten every second).
+  explicit DurableFile(std::string path, bool sync = true);
   ~DurableFile();  // an uncommitted file is removed
   DurableFile(const DurableFile&) = delete;
   DurableFile& operator=(const DurableFile&) = delete;
 
   void write(const void* data, std::size_t bytes);
   void write(const std::string& s) { write(s.data(), s.size()); }
-  // fsync, close, rename over PATH, fsync the directory.
+  // fsync, close, rename over PATH, fsync the directory (without `sync`: close and rename).
   void commit();
 
  private:
   [[noreturn]] void fail(const std::string& what);
   std::string path_, partial_;
   int fd_ = -1;
+  bool sync_;
 };
 
 // The whole of `text` as PATH, durably.
 void write_file_durably(const std::string& path, const std::string& text);
+// The same, atomic and checked but not flushed to the disk.
+void write_file_atomically(const std::string& path, const std::string& text);
 
 }  // namespace psph

@@ -18,13 +18,19 @@ RunDirectory::RunDirectory(const std::string& path, const std::string& resolved)
   std::error_code ec;
   if (fs::exists(path, ec) && !(fs::is_directory(path, ec) && fs::is_empty(path, ec)))
     throw std::runtime_error("--out " + path + ": the run directory exists and is not empty; choose another");
-  for (const char* sub : {"", "/extracts", "/images", "/checkpoints"})
-    if (fs::create_directories(path + sub, ec), ec)
-      throw std::runtime_error("--out " + path + ": cannot create the run directory: " + ec.message());
-  write_file_durably(path + "/case.resolved.toml", resolved + "\n");
-  log_.open(path + "/log.txt");
-  monitors_.open(path + "/monitors.csv");
-  if (!log_ || !monitors_) throw std::runtime_error("--out " + path + ": cannot create log.txt and monitors.csv in it");
+  const bool existed = fs::exists(path, ec);
+  try {
+    for (const char* sub : {"", "/extracts", "/images", "/checkpoints"})
+      if (fs::create_directories(path + sub, ec), ec)
+        throw std::runtime_error("--out " + path + ": cannot create the run directory: " + ec.message());
+    write_file_durably(path + "/case.resolved.toml", resolved + "\n");
+    log_.open(path + "/log.txt");
+    monitors_.open(path + "/monitors.csv");
+    if (!log_ || !monitors_) throw WriteError("--out " + path + ": cannot create log.txt and monitors.csv in it");
+  } catch (...) {  // nothing half-made is left
+    if (!existed) fs::remove_all(path, ec);
+    throw;
+  }
 }
 
 void RunDirectory::log(const std::string& line) {
