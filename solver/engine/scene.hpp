@@ -10,6 +10,7 @@
 #include "fluid/fluid_options.hpp"
 #include "fluid/body_force_region.hpp"
 #include "core/material.hpp"
+#include "damage/damage_options.hpp"
 #include "integrate/step_options.hpp"
 #include "interface/interface_options.hpp"
 #include "kernels/kernel.hpp"
@@ -32,7 +33,7 @@ struct DiscretisationOptions {
   double jitter = 0;          // initial disorder: fluid positions moved by up to this fraction of the spacing
   double neighbour_skin = 0.1;  // Verlet-list skin as a fraction of the support radius
 };
-struct SolverOptions : DiscretisationOptions, StepOptions, FluidOptions, InterfaceOptions, SolidOptions {};
+struct SolverOptions : DiscretisationOptions, StepOptions, FluidOptions, InterfaceOptions, SolidOptions, DamageOptions {};
 
 struct Scene {
   int dimension = 3;

@@ -22,6 +22,7 @@ void read_domain(CaseReader& top, CaseDraft& d);           // [domain]
 void read_discretisation(CaseReader& top, CaseDraft& d);   // [discretisation]
 void read_materials(CaseReader& top, CaseDraft& d);        // [materials.*]
 void read_solid(CaseReader& top, CaseDraft& d);            // [solid]
+void read_damage(CaseReader& top, CaseDraft& d);           // [damage]
 void read_body_force_regions(CaseReader& top, CaseDraft& d);  // [[body_force_region]]
 void read_solid_loads(CaseReader& top, CaseDraft& d);      // [[solid_load]]
 void read_open_boundary(CaseReader& top, CaseDraft& d);    // [open_boundary]
@@ -41,6 +42,7 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
   read_discretisation(top, d);
   read_materials(top, d);
   read_solid(top, d);
+  read_damage(top, d);
   read_body_force_regions(top, d);
   read_solid_loads(top, d);
   read_open_boundary(top, d);
