@@ -39,14 +39,13 @@ TEST(DamageCase, GoodTablesAreRead) {
             DamageModel::None);
   const DamageOptions r = options_of(std::string("model = \"rankine_mohr_coulomb\"\n") + kPlate +
                                      "friction_angle = 30.0\ntensile_strength = 5e6\ncombination = \"max\"\n"
-                                     "degraded = \"ghost\"\nghost_threshold = 0.9\nirreversible = true");
+                                     "degraded = \"all_moduli\"\nirreversible = true");
   EXPECT_EQ(r.damage_model, DamageModel::RankineMohrCoulomb);
   EXPECT_EQ(r.damage_materials, 1u << 1);  // "plate" (index 1) follows "clamp" in key order
   EXPECT_NEAR(r.friction_angle, M_PI / 6, 1e-15);
   EXPECT_EQ(r.residual_tensile_strength, 0.5e6);  // 0.1 f_t by default
   EXPECT_EQ(r.damage_combination, DamageCombination::Max);
-  EXPECT_EQ(r.damage_degrades, DamageDegrades::Ghost);
-  EXPECT_EQ(r.ghost_threshold, 0.9);
+  EXPECT_EQ(r.damage_degrades, DamageDegrades::AllModuli);
   EXPECT_TRUE(r.damage_irreversible);
 
   const DamageOptions a = options_of(std::string("model = \"at2\"\n") + kPlate + "critical_energy_release = 2.5e3\n"
@@ -107,4 +106,15 @@ TEST(DamageCase, MaterialsMustBeElastic) {
   const std::string msg = error_of(water);
   EXPECT_NE(msg.find("damage.model"), std::string::npos) << msg;
   EXPECT_NE(msg.find("kind = \"elastic\""), std::string::npos) << msg;
+}
+
+// What the damage stage does not apply yet is refused, never accepted without effect.
+TEST(DamageCase, WhatIsNotBuiltYetIsRefused) {
+  expect_refused(std::string("model = \"rankine_mohr_coulomb\"\n") + kPlate + "degraded = \"ghost\"",
+                 {"damage.degraded", "not built yet"});
+  const std::string displacement =
+      replaced(with_damage(std::string("model = \"at2\"\n") + kPlate), "[damage]", "[solid]\nformulation = \"displacement\"\n\n[damage]");
+  const std::string msg = error_of(displacement);
+  EXPECT_NE(msg.find("damage.model"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("the displacement form does not take damage yet"), std::string::npos) << msg;
 }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "case_text.hpp"
+#include "stretched_rod.hpp"
 #include "engine/engine.hpp"
 #include "scene/scene_builder.hpp"
 
@@ -93,47 +94,7 @@ TEST(SolidLoad, ConfiningTractionCompressesABlockAsTheLawSays) {
 }
 
 TEST(SolidLoad, ImposedVelocityStretchesARodAndHoldsIt) {
-  // A 1D rod clamped at x = 0 whose last 2 spacings move at 0.01 m/s for 5 ms: a 50 um
-  // displacement, then held; damped (its first mode: 500 rad/s), the rod settles to a uniform
-  // strain 50 um / its length.
-  const std::string rod = R"(
-[case]
-name = "rod"
-dimension = 1
-[domain]
-lower = [-0.004]
-upper = [0.1]
-[discretisation]
-spacing = 1.0e-3
-support_radius = 2.0e-3
-[materials.steel]
-kind = "elastic"
-density = 1000.0
-young_modulus = 1.0e6
-poisson_ratio = 0.0
-[materials.clamp]
-kind = "wall"
-[solid]
-damping_rate = 1.0e3
-[time]
-end = 0.05
-[[geometry]]
-shape = "box"
-lower = [-0.004]
-upper = [0.1]
-material = "clamp"
-[[geometry]]
-shape = "box"
-lower = [0.0]
-upper = [0.1]
-material = "steel"
-[[solid_load]]
-material = "steel"
-lower = [0.098]
-upper = [0.1]
-velocity = [0.01]
-duration = 5.0e-3
-)";
+  const std::string rod = test::stretched_rod_case();  // tests/stretched_rod.hpp
   auto e = engine_of(rod);
   e->run_until(0.05);
   const auto u = e->field("displacement"), strain = e->field("strain"), g = e->field("solid_load_mask");

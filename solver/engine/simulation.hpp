@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "boundary/open_boundary_stage.hpp"
+#include "damage/damage_stage.hpp"
 #include "engine/engine.hpp"
 #include "fluid/fluid_stage.hpp"
 #include "integrate/kick_drift.hpp"
@@ -32,6 +33,7 @@ class Simulation final : public Engine {
     setup_context(sc);
     interface_.setup(cx_, opt_);
     elastic_.setup(cx_, opt_, cx_.elastic ? clamp_mirror_partners(sc) : std::vector<std::int32_t>{});
+    damage_.setup(cx_, opt_);
     loads_.setup(cx_, sc.solid_loads, sc.load_mask);
     setup_rigid(sc);
     coupling_.setup(cx_, opt_.solid_coupling);
@@ -102,6 +104,7 @@ class Simulation final : public Engine {
   std::vector<MonitorValue> monitors() override {
     std::vector<MonitorValue> out;
     elastic_.monitors(cx_, out);
+    damage_.monitors(cx_, out);
     rigid_.monitors(out);
     return out;
   }
@@ -130,6 +133,7 @@ class Simulation final : public Engine {
       rebuild();
     }
     elastic_.strain(cx_);
+    damage_.update(cx_);
     forces();
   }
 
@@ -137,6 +141,7 @@ class Simulation final : public Engine {
   void evaluate() {
     if (cx_.neighbours.expired(cx_.s, cx_.grid)) rebuild();
     elastic_.strain(cx_);  // before the fluid's sums, which read the solid's volumes
+    damage_.update(cx_);   // the degraded stress, before the forces read it
     if (cx_.fluid) {
       open_.convert_inlet(cx_);
       fluid_.density(cx_);
@@ -193,6 +198,7 @@ class Simulation final : public Engine {
   StepContext<D, B> cx_;
   InterfaceStage<D, B> interface_;
   ElasticStage<D, B> elastic_;
+  DamageStage<D, B> damage_;
   SolidLoadStage<D, B> loads_;
   RigidStage<D, B> rigid_;
   CouplingStage<D, B> coupling_;

@@ -50,7 +50,8 @@ struct StressForcePass {
   }
 };
 
-// Elastic energy V_i S(E_i) : E_i / 2 of the stress form (small strain: S = sigma, E = eps).
+// Elastic energy V_i S : E_i / 2 of the stress form, S from the stress the forces read (degraded
+// where [damage] applies; small strain: S = sigma, E = eps; large strain: S from sigma and F).
 template <int D>
 struct StrainEnergyOf {
   ParticleView<D> s;
@@ -58,8 +59,7 @@ struct StrainEnergyOf {
   PSPH_HD Real operator()(int i) const {
     const int mi = s.material[i];
     if (!mats.is_elastic(mi)) return Real(0);
-    const Mat<D> S = small_strain_stress(s.strain[i], mats[mi].bulk_modulus, mats[mi].shear_modulus);
-    return s.m[i] / s.rho[i] * half_contraction(S, s.strain[i]);
+    return s.m[i] / s.rho[i] * half_contraction(s.piola ? second_piola(s.stress[i], s.defgrad[i]) : s.stress[i], s.strain[i]);
   }
 };
 

@@ -1,0 +1,83 @@
+#pragma once
+// The damage stage's pass (damage/damage_stage.hpp), after the strain pass of the elastic stage:
+// each damaging particle's new damage from its strain (the Green-Lagrange strain in large
+// strain), its driving force, and its stress with the degraded moduli in place of the intact one
+// (the Cauchy stress, and in large strain the Piola stress the force pass reads).
+#include "core/material.hpp"
+#include "damage/damage_options.hpp"
+#include "damage/degraded_stress.hpp"
+#include "damage/driving_force.hpp"
+#include "damage/rankine_mohr_coulomb.hpp"
+#include "damage/thermodynamic_update.hpp"
+#include "state/particles.hpp"
+
+namespace psph {
+
+// What the pass needs of the case, by value.
+struct DamageLaw {
+  bool rankine = false;  // else the thermodynamic models
+  unsigned materials = 0;  // bit k: material k damages
+  RankineMohrCoulomb rmc;
+  DamageDegrades degrades = DamageDegrades::Deviatoric;
+  ThermodynamicDamage thermo[kMaxMaterials];  // per material (PCW's Y_c0 follows each E0)
+  PSPH_HD bool damages(int material) const { return materials >> material & 1u; }
+};
+
+template <int D>
+struct DamageUpdatePass {
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  DamageLaw law;
+  Real* damage;
+  Real* driving_force;  // Y (thermodynamic) or the target damage of eq. 23 (Rankine-Mohr-Coulomb)
+
+  PSPH_HD void operator()(int i) const {
+    const int mi = s.material[i];
+    if (!law.damages(mi)) return;
+    const Real k0 = mats[mi].bulk_modulus, mu0 = mats[mi].shear_modulus;
+    const Mat<D> eps = s.strain[i];
+    Mat<D> stress;
+    if (law.rankine) {
+      driving_force[i] = rankine_mohr_coulomb_target(law.rmc, principal_state(eps, k0, mu0), k0, mu0);
+      damage[i] = relaxed_damage(law.rmc, damage[i], driving_force[i]);
+      stress = rankine_mohr_coulomb_stress(law.degrades, eps, k0, mu0, damage[i]);
+    } else {
+      const ThermodynamicDamage& m = law.thermo[mi];
+      damage[i] = thermodynamic_damage_update(m, damage[i], eps, k0, mu0);
+      driving_force[i] = damage_driving_force(m, damage[i], driving_energy(eps, k0, mu0, m.unilateral));
+      stress = thermodynamic_stress(m, eps, k0, mu0, damage[i]);
+    }
+    if (s.piola) {  // large strain: eps is E and stress is S
+      LargeStrain<D> ls;
+      ls.F = s.defgrad[i];
+      piola_and_cauchy(ls, stress);
+      s.piola[i] = ls.piola, s.stress[i] = ls.cauchy;
+    } else {
+      s.stress[i] = stress;
+    }
+  }
+};
+
+// Per particle: 1 where damage > 1e-3 (the count of damaged particles), the damage, and the
+// energy its damage dissipated (Deptulski eq. 4.26b, times the particle's volume).
+struct DamagedOf {
+  const Real* damage;
+  PSPH_HD Real operator()(int i) const { return damage[i] > Real(1e-3) ? Real(1) : Real(0); }
+};
+struct DamageOf {
+  const Real* damage;
+  PSPH_HD Real operator()(int i) const { return damage[i]; }
+};
+template <int D>
+struct DamageEnergyOf {
+  ParticleView<D> s;
+  DamageLaw law;
+  const Real* damage;
+  PSPH_HD Real operator()(int i) const {
+    const int mi = s.material[i];
+    if (law.rankine || !law.damages(mi)) return Real(0);
+    return s.m[i] / s.rho[i] * dissipated_energy_density(law.thermo[mi], damage[i]);
+  }
+};
+
+}  // namespace psph

@@ -1,0 +1,59 @@
+#pragma once
+// The damage stage of the elastic solid ([damage]): after the elastic stage's strain pass, each
+// damaging particle's damage is updated from its strain and its stress degraded
+// (damage/damage_pass.hpp), before the force passes read it. Rankine-Mohr-Coulomb (Pazdniakou
+// 2018 §2.2.2) or AT-1, AT-2, PCW (Deptulski 2021 §4.1). Fields `damage` and
+// `damage_driving_force`; monitors: damaged particles, total damage, energy dissipated by damage.
+// The damage is a registered field: checkpoints and reorderings carry it.
+#include <vector>
+
+#include "damage/damage_options.hpp"
+#include "damage/damage_parameters.hpp"
+#include "damage/damage_pass.hpp"
+#include "stage/monitor_value.hpp"
+#include "stage/step_context.hpp"
+
+namespace psph {
+
+template <int D, class B>
+class DamageStage {
+ public:
+  bool active() const { return active_; }
+
+  void setup(StepContext<D, B>& cx, const DamageOptions& o) {
+    active_ = cx.elastic && o.damage_model != DamageModel::None;
+    if (!active_) return;
+    law_.rankine = o.damage_model == DamageModel::RankineMohrCoulomb;
+    law_.materials = o.damage_materials;
+    law_.rmc = rankine_mohr_coulomb_parameters(o);
+    law_.degrades = o.damage_degrades;
+    for (int k = 0; k < cx.mats.count; ++k) law_.thermo[k] = thermodynamic_parameters(o, cx.mats.m[k]);
+    const int n = cx.n();
+    damage_.resize(n), driving_force_.resize(n);
+    damage_.zero(), driving_force_.zero();
+    cx.s.add_field(damage_, 1, "damage", "-", "damage D in [0, 1) of the elastic solid ([damage])");
+    cx.s.add_field(driving_force_, 1, "damage_driving_force", "Pa",
+                   "Y = -g'(D) w~ (AT-1, AT-2, PCW); the target damage of eq. 23 (Rankine-Mohr-Coulomb)");
+  }
+
+  // After the strain pass, before the forces.
+  void update(StepContext<D, B>& cx) {
+    if (!active_) return;
+    B::for_each(cx.n(), DamageUpdatePass<D>{cx.view(), cx.mats, law_, damage_.data(), driving_force_.data()});
+  }
+
+  void monitors(StepContext<D, B>& cx, std::vector<MonitorValue>& out) const {
+    if (!active_) return;
+    out.push_back({"damaged_particles", double(cx.template sum_of<Real>(DamagedOf{damage_.data()}))});
+    out.push_back({"total_damage", double(cx.template sum_of<Real>(DamageOf{damage_.data()}))});
+    if (!law_.rankine)
+      out.push_back({"damage_energy", double(cx.template sum_of<Real>(DamageEnergyOf<D>{cx.view(), law_, damage_.data()}))});
+  }
+
+ private:
+  bool active_ = false;
+  DamageLaw law_;
+  DeviceArray<Real, B> damage_, driving_force_;
+};
+
+}  // namespace psph

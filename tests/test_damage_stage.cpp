@@ -1,0 +1,85 @@
+// The damage stage in a run (damage/damage_stage.hpp): a rod clamped at one end and stretched by
+// its other end (AT-1, onset at half the final strain) damages, never heals, stays below the bound,
+// carries less stress than the intact rod, reports its monitors, and restarts bitwise from a
+// checkpoint with its damage.
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "case_text.hpp"
+#include "stretched_rod.hpp"
+#include "engine/engine.hpp"
+#include "scene/scene_builder.hpp"
+
+using namespace psph;
+
+namespace {
+
+// tests/stretched_rod.hpp, 1D, E = 1e6 Pa, nu = 0: the end moves 50 um in 5 ms, a strain of
+// ~5e-4 over the 0.1 m rod.
+// AT-1's onset 2 w~ = Y_c0 with w~ = E eps^2 / 2: eps = sqrt(Y_c0 / E) = 2.5e-4 for Y_c0 = 0.0625 Pa.
+const std::string kDamage = "[damage]\nmodel = \"at1\"\nmaterials = [\"steel\"]\ncritical_energy_release = 0.0625\n\n";
+
+std::string damaged_rod() {
+  return test::replaced(test::replaced(test::stretched_rod_case(), "[time]", kDamage + "[time]"), "end = 0.05", "end = 0.02");
+}
+
+std::unique_ptr<Engine> engine_of(const std::string& text) {
+  Case c = load_case_text(text, "rod.toml");
+  build_particles(c);
+  return make_engine(c.scene, "cpu");
+}
+
+// The damage of each particle id.
+std::vector<double> damage_by_id(Engine& e) {
+  const auto d = e.field("damage"), id = e.field("id");
+  std::vector<double> out(d.size());
+  for (std::size_t i = 0; i < d.size(); ++i) out[static_cast<std::size_t>(id[i])] = d[i];
+  return out;
+}
+
+double monitor(Engine& e, const std::string& name) {
+  for (const auto& m : e.monitors())
+    if (m.name == name) return m.value;
+  ADD_FAILURE() << "no monitor " << name;
+  return 0;
+}
+
+}  // namespace
+
+TEST(DamageStage, AStretchedRodDamagesIrreversiblyAndCarriesLess) {
+  auto e = engine_of(damaged_rod());
+  const std::vector<double> start = damage_by_id(*e);
+  EXPECT_EQ(*std::max_element(start.begin(), start.end()), 0.0);
+  e->run_until(0.004);  // the end has moved 40 um: past the onset
+  const std::vector<double> before = damage_by_id(*e);
+  e->run_until(0.02);
+  const std::vector<double> after = damage_by_id(*e);
+  double most = 0;
+  for (std::size_t k = 0; k < after.size(); ++k) {
+    EXPECT_GE(after[k], before[k]) << "particle " << k << " healed";
+    EXPECT_LE(after[k], 0.99 + 1e-12) << "particle " << k << " passed the bound";
+    most = std::max(most, after[k]);
+  }
+  EXPECT_GT(most, 0.1);
+  EXPECT_GT(monitor(*e, "damaged_particles"), 0);
+  EXPECT_GT(monitor(*e, "total_damage"), most - 1e-12);
+  EXPECT_GT(monitor(*e, "damage_energy"), 0);
+  // The intact rod, stretched the same way, stores more elastic energy.
+  auto intact = engine_of(test::replaced(damaged_rod(), kDamage, ""));
+  intact->run_until(0.02);
+  EXPECT_LT(monitor(*e, "elastic_energy"), 0.9 * monitor(*intact, "elastic_energy"));
+}
+
+TEST(DamageStage, ARestartCarriesTheDamageBitwise) {
+  auto e = engine_of(damaged_rod());
+  e->run_until(0.006);
+  const Checkpoint ck = e->checkpoint();
+  e->run_until(0.01);
+  auto r = engine_of(damaged_rod());
+  r->restore(ck);
+  r->run_until(0.01);
+  EXPECT_EQ(damage_by_id(*r), damage_by_id(*e));
+  EXPECT_EQ(r->field("position"), e->field("position"));
+}
