@@ -160,14 +160,11 @@ int RunDriver::start() {
     log("dashboard: " + dashboard_->url() + " (to pause, resume or stop: the token in " + rd_->path() + "/token)");
     std::cout << "dashboard with control: " << dashboard_->url() << "?token=" << supervision_->token() << std::endl;
   }
-  try {
+  const bool first_outputs = wrote([&] {
     monitor();
     if (extracts_) writer_->write(*engine_);
-  } catch (const WriteError& e) {
-    write_failed(e.what());  // the loop does not start; finish() reports it
-    return 0;
-  }
-  if (!insitu_->active()) return 0;
+  });
+  if (!first_outputs || !insitu_->active()) return 0;  // a failed write: the loop does not start
   try {
     insitu_->start(*engine_, c_, rd_->path(), [&](const std::string& l) { log(l); });
   } catch (const std::exception& e) {
@@ -307,12 +304,10 @@ void RunDriver::write_failed(const std::string& what) {
 void RunDriver::finish() {
   // An unstable or failed state is not saved: the last good checkpoint stays.
   const bool cut_short = status_ == "interrupted" || status_ == "stopped";
-  try {
+  wrote([&] {
     if (code_ == 0 || code_ == 130) monitor(), checkpoint();
     if (extracts_ && cut_short) writer_->write(*engine_);
-  } catch (const WriteError& e) {
-    write_failed(e.what());
-  }
+  });
   if (insitu_->active()) {
     try {
       if (cut_short) insitu_->output(*engine_);  // the state it stopped at, as a last frame
@@ -327,16 +322,8 @@ void RunDriver::finish() {
     j["insitu"] = insitu_->stats(wall);
     log(insitu_->report(wall));
   }
-  try {
-    rd_->write_summary(j);
-  } catch (const WriteError& e) {
-    write_failed(e.what());
-  }
-  try {
-    supervision_->finish(*engine_, status_, diagnostic_, wall);
-  } catch (const WriteError& e) {
-    write_failed(e.what());
-  }
+  wrote([&] { rd_->write_summary(j); });
+  wrote([&] { supervision_->finish(*engine_, status_, diagnostic_, wall); });
   if (dashboard_) {
     dashboard_->stop();  // after a last look at the run directory: its clients get the final state
     log("dashboard closed; `poresph serve " + rd_->path() + "` shows the finished run");

@@ -14,6 +14,7 @@
 #include "dashboard/dashboard_server.hpp"
 #include "engine/engine.hpp"
 #include "io/checkpoint_file.hpp"
+#include "io/durable_file.hpp"
 #include "io/particle_output.hpp"
 #include "io/run_directory.hpp"
 #include "monitors/two_phase.hpp"
@@ -42,6 +43,17 @@ class RunDriver {
   void monitor();
   void checkpoint();
   void write_failed(const std::string& what);
+  // Runs `write`; a WriteError ends the run (write_failed) and gives false.
+  template <class F>
+  bool wrote(F&& write) {
+    try {
+      write();
+      return true;
+    } catch (const WriteError& e) {
+      write_failed(e.what());
+      return false;
+    }
+  }
   void finish();
   nlohmann::json summary(double wall) const;
   double wall_now() const { return std::chrono::duration<double>(clock::now() - t0_).count(); }

@@ -26,6 +26,17 @@ struct Material {
   Real colour = 1;
 };
 
+// Young's modulus and Poisson ratio of the moduli k, mu: E = 9 k mu / (3 k + mu),
+// nu = (3 k - 2 mu) / (2 (3 k + mu)).
+template <class T>
+PSPH_HD inline T young_modulus(T k, T mu) {
+  return T(9) * k * mu / (T(3) * k + mu);
+}
+template <class T>
+PSPH_HD inline T poisson_ratio(T k, T mu) {
+  return (T(3) * k - T(2) * mu) / (T(2) * (T(3) * k + mu));
+}
+
 constexpr int kMaxMaterials = 8;
 template <int D>
 struct MaterialTable {

@@ -10,12 +10,6 @@
 
 namespace psph {
 
-// E0 = 9 k mu / (3 k + mu).
-inline double young_modulus_of(const Material& m) {
-  const double k = m.bulk_modulus, mu = m.shear_modulus;
-  return 9 * k * mu / (3 * k + mu);
-}
-
 inline RankineMohrCoulomb rankine_mohr_coulomb_parameters(const DamageOptions& o) {
   RankineMohrCoulomb p;
   p.tensile_strength = Real(o.tensile_strength);
@@ -44,7 +38,7 @@ inline ThermodynamicDamage thermodynamic_parameters(const DamageOptions& o, cons
   t.unilateral = o.unilateral;
   t.alpha = Real(o.pcw_alpha), t.beta = Real(o.pcw_beta);
   t.critical_energy = Real(pcw && o.critical_energy_from_strains
-                               ? 0.5 * young_modulus_of(m) * o.elastic_limit_strain * o.ultimate_strain
+                               ? 0.5 * young_modulus<double>(m.bulk_modulus, m.shear_modulus) * o.elastic_limit_strain * o.ultimate_strain
                                : o.critical_energy_release);
   t.bound = Real(o.damage_bound);
   return t;

@@ -38,8 +38,7 @@ struct DamageUpdatePass {
     const Mat<D> eps = s.strain[i];
     Mat<D> stress;
     if (law.rankine) {
-      driving_force[i] = rankine_mohr_coulomb_target(law.rmc, principal_state(eps, k0, mu0), k0, mu0);
-      damage[i] = relaxed_damage(law.rmc, damage[i], driving_force[i]);
+      damage[i] = rankine_mohr_coulomb_update(law.rmc, damage[i], eps, k0, mu0, &driving_force[i]);
       stress = rankine_mohr_coulomb_stress(law.degrades, eps, k0, mu0, damage[i]);
     } else {
       const ThermodynamicDamage& m = law.thermo[mi];

@@ -5,6 +5,7 @@
 // here principal values are tension positive, so its sigma_3 is -stress[0], its sigma_1 is
 // -stress[2], and its strains eps_3, eps_1 are -strain[0], -strain[2]. Table 1 strains are
 // magnitudes. The criteria see the stress of the intact moduli (the effective stress).
+#include "core/material.hpp"
 #include "damage/principal_state.hpp"
 
 namespace psph {
@@ -66,8 +67,7 @@ PSPH_HD inline Real mazars_tensile_weight(const PrincipalState& s, Real young, R
 
 // The target damage of eq. 23 at this state: D_t where eq. 19 holds, D_c where eq. 21 holds.
 PSPH_HD inline Real rankine_mohr_coulomb_target(const RankineMohrCoulomb& p, const PrincipalState& s, Real k0, Real mu0) {
-  const Real young = Real(9) * k0 * mu0 / (Real(3) * k0 + mu0);
-  const Real poisson = (Real(3) * k0 - Real(2) * mu0) / (Real(2) * (Real(3) * k0 + mu0));
+  const Real young = young_modulus(k0, mu0), poisson = poisson_ratio(k0, mu0);
   const Real dt = rankine_reached(p, s) ? rankine_damage(p, young, s.strain[0]) : Real(0);
   const Real dc = mohr_coulomb_reached(p, s) ? mohr_coulomb_damage(p, young, -s.strain[2]) : Real(0);
   if (!p.mazars) return dt > dc ? dt : dc;
@@ -82,11 +82,13 @@ PSPH_HD inline Real relaxed_damage(const RankineMohrCoulomb& p, Real damage, Rea
   return (p.irreversible && next < damage) ? damage : next;
 }
 
-// One step of the law at strain eps for a point that had `damage`.
+// One step of the law at strain eps for a point that had `damage` (its target in `target`, if given).
 template <int D>
 PSPH_HD inline Real rankine_mohr_coulomb_update(const RankineMohrCoulomb& p, Real damage, const Mat<D>& eps, Real k0,
-                                                Real mu0) {
-  return relaxed_damage(p, damage, rankine_mohr_coulomb_target(p, principal_state(eps, k0, mu0), k0, mu0));
+                                                Real mu0, Real* target = nullptr) {
+  const Real t = rankine_mohr_coulomb_target(p, principal_state(eps, k0, mu0), k0, mu0);
+  if (target) *target = t;
+  return relaxed_damage(p, damage, t);
 }
 
 }  // namespace psph

@@ -1,5 +1,5 @@
 #pragma once
-// Files a run depends on (checkpoints, summary.json, the extract collection): written whole to
+// Files a run depends on (checkpoints, summary.json, case.resolved.toml): written whole to
 // PATH.partial, flushed to the disk (fsync), then renamed, so that PATH is either the old file or
 // the complete new one, also after a crash or a power cut. Every write is checked: a full disk is
 // a WriteError naming the file, never a silent loss.

@@ -62,7 +62,7 @@ void ParticleWriter::write_collection() const {
   o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
   for (const auto& [t, f] : written_) o << "    <DataSet timestep=\"" << t << "\" file=\"" << f << "\"/>\n";
   o << "  </Collection>\n</VTKFile>\n";
-  write_file_durably(dir_ + "/particles.pvd", o.str());
+  write_file_atomically(dir_ + "/particles.pvd", o.str());  // rewritten at every extract, as they are: no fsync
 }
 
 }  // namespace psph

@@ -1,5 +1,7 @@
 #include "scene/grain_pack.hpp"
 
+#include "scene/shape.hpp"
+
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -41,7 +43,7 @@ double inside_fraction(const GrainPackSpec& s, const Grain& g, int D) {
 GrainPack generate_grain_pack(const GrainPackSpec& s, int D) {
   double box = 1;
   for (int k = 0; k < D; ++k) box *= s.upper[k] - s.lower[k];
-  const double unit_ball = D == 1 ? 2 : D == 2 ? M_PI : 4 * M_PI / 3;
+  const double unit_ball = unit_ball_volume(D);
   std::mt19937_64 rng(s.seed);
   GrainPack pack;
   double solid = 0;

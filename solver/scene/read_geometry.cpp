@@ -15,8 +15,7 @@ void bound_grain_pack(CaseReader& r, const GrainPackSpec& p, const CaseDraft& d)
   const int D = d.dimension();
   double box = 1;
   for (int k = 0; k < D; ++k) box *= p.upper[k] - p.lower[k];
-  const double unit_ball = D == 1 ? 2 : D == 2 ? M_PI : 4 * M_PI / 3;
-  const double grains = p.solid_fraction * box / (unit_ball * std::pow(p.grain_radius, D));
+  const double grains = p.solid_fraction * box / (unit_ball_volume(D) * std::pow(p.grain_radius, D));
   const double sites = box / std::pow(d.c.scene.options.spacing, D);
   if (!(grains <= kMaxGrains))
     r.fail("grain_radius", "expected a pack of at most " + CaseReader::fmt(kMaxGrains) + " grains, got about " +
@@ -73,8 +72,9 @@ std::shared_ptr<const Shape> read_shape(CaseReader& r, CaseDraft& d, const std::
   // Its shells are placed whole before the domain clips them.
   auto sphere = make_sphere(centre, radius, concentric, D);
   const double points = sphere->point_estimate(d.c.scene.options.spacing);
-  if (!(points <= 4e8))
-    r.fail("radius", "expected a concentric sphere of at most 4e8 particles, got about " + CaseReader::fmt(points));
+  if (!(points <= kMaxParticles))
+    r.fail("radius", "expected a concentric sphere of at most 4e8 particles, got about " +
+                         CaseReader::fmt(points));
   return sphere;
 }
 

@@ -156,19 +156,15 @@ void place_lattice(Case& c, Builder& b, const Bounds& part) {
   // The sites' index range around the part (one site wider: in_part below decides).
   int lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
   const double sites = lattice_sites(sc);
-  if (!(sites <= 400'000'000.0))
+  if (!(sites <= kMaxParticles))
     throw CaseError(c.file + ": discretisation.spacing: the domain holds " + CaseReader::fmt(sites) +
-                    " lattice sites; expected at most 4e8 (at ~0.5 kB a particle, " + CaseReader::fmt(sites * 5e-7) + " GB)");
-  long total = 1;
+                    " lattice sites; expected at most 4e8 (at ~0.5 kB a particle, " + CaseReader::fmt(sites * 5e-7) +
+                    " GB)");
   for (int k = 0; k < D; ++k) {
     const int n = static_cast<int>(std::floor((sc.upper[k] - sc.lower[k]) / dx + 1e-6));
     lo[k] = std::clamp(static_cast<int>(std::floor((part.lower[k] - sc.lower[k]) / dx - 0.5)), 0, n);
     hi[k] = std::clamp(static_cast<int>(std::ceil((part.upper[k] - sc.lower[k]) / dx - 0.5)) + 1, lo[k], n);
-    total *= hi[k] - lo[k];
   }
-  if (total > 400'000'000L)
-    throw CaseError(c.file + ": discretisation.spacing: the domain holds " + std::to_string(total) +
-                    " lattice sites; expected at most 4e8");
   for (int k = 0; k < D; ++k)
     if (hi[k] == lo[k]) return;
   int idx[3] = {lo[0], lo[1], lo[2]};

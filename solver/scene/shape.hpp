@@ -4,6 +4,7 @@
 // gives each lattice site the material of the last shape that contains it. A new shape (a
 // segmented image, say) is one new class here.
 #include <array>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -11,6 +12,15 @@
 #include "scene/grain_pack.hpp"
 
 namespace psph {
+
+// The most particles a case may place (lattice sites, or a concentric sphere's points): at
+// ~0.5 kB a particle, 200 GB.
+constexpr double kMaxParticles = 4e8;
+
+// The volume of the unit ball: 2 in 1D, pi in 2D, 4 pi / 3 in 3D.
+inline double unit_ball_volume(int dimension) {
+  return dimension == 1 ? 2 : dimension == 2 ? M_PI : 4 * M_PI / 3;
+}
 
 // An axis-aligned box [lower, upper] in `dimension` components.
 struct Bounds {

@@ -37,7 +37,7 @@ class SphereShape final : public Shape {
   }
   // Shells of one spacing: about the volume in spacings, (R / dx)^D times the unit ball's volume.
   double point_estimate(double spacing) const override {
-    return concentric_ ? std::pow(r_ / spacing, D_) * (D_ == 1 ? 2 : D_ == 2 ? M_PI : 4 * M_PI / 3) : 0;
+    return concentric_ ? std::pow(r_ / spacing, D_) * unit_ball_volume(D_) : 0;
   }
 
  private:

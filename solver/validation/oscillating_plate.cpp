@@ -52,7 +52,7 @@ PlateVibration run_oscillating_plate(const Case& c, const std::string& backend) 
   const Material& m = plate_material(sc);
   // Plane strain: E / (1 - nu^2) from the bulk and shear moduli.
   const double k = m.bulk_modulus, mu = m.shear_modulus;
-  const double E = 9 * k * mu / (3 * k + mu), nu = (3 * k - 2 * mu) / (2 * (3 * k + mu));
+  const double E = young_modulus(k, mu), nu = poisson_ratio(k, mu);
   const double wave = kL / kLength;
   PlateVibration out;
   out.omega_exact = std::sqrt(E * kThickness * kThickness * std::pow(wave, 4) / (12 * m.rest_density * (1 - nu * nu)));
