@@ -10,6 +10,7 @@
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
 #include "engine/clamp_partners.hpp"
+#include "integrate/timestep.hpp"
 
 using namespace psph;
 using psph::test::replaced;
@@ -163,6 +164,26 @@ xsph = 0.5
   EXPECT_LT(err_visc, 1e-12);
   EXPECT_LT(with, 0.9);
   EXPECT_NEAR(without, 1.0, 1e-3);
+}
+
+// The solid's artificial viscosity limits the step as the kinematic viscosity it amounts to,
+// nu = alpha h_s c / (2 (d + 2)) (integrate/timestep.hpp): in 2D its viscous limit is h_s / (alpha c),
+// 2.5 times below the acoustic one at the softening bar's alpha = 10, where the step of the
+// acoustic limit alone damaged the bar near its grips within 7 us (validation/softening_bar.cpp).
+// Without it, or on fluids only, the limits are those of before.
+TEST(StressForm, ArtificialViscosityLimitsTheStep) {
+  Material m[2];
+  m[0].kind = MaterialKind::Elastic, m[0].sound_speed = 6758.5;
+  m[1].kind = MaterialKind::Fluid, m[1].sound_speed = 1500;  // the solid's c, not the fluid's, enters
+  const double h = 2.5e-3;
+  TimeStepInputs in = time_step_inputs(m, 2, false, 0);
+  EXPECT_EQ(time_step_limits(h, in, 0, 0, 1).viscous, std::numeric_limits<double>::infinity());
+  add_solid_artificial_viscosity(in, m, 2, 10, 0, 2);
+  const TimeStepLimits l = time_step_limits(h, in, 70, 0, 1);
+  EXPECT_NEAR(l.viscous, h / (10 * 6758.5), 1e-20);
+  EXPECT_STREQ(l.limiting(), "viscous");
+  add_solid_artificial_viscosity(in, m, 2, 10, 1, 3);  // the quadratic term with |v_ij| <= 2 v_max, in 3D
+  EXPECT_NEAR(time_step_limits(h, in, 70, 0, 1).viscous, 0.125 * h * h / (h * (10 * 6758.5 + 2 * 70) / 10), 1e-20);
 }
 
 // Saint Venant-Kirchhoff is objective: a free block set spinning at 10 rad/s turns as a rigid body

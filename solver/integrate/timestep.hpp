@@ -18,6 +18,10 @@ namespace psph {
 // limit), the smallest fluid density over the surface tension (0 without surface tension).
 struct TimeStepInputs {
   double c_max = 0, nu_max = 0, rho_over_sigma = 0;
+  // The elastic solids' Monaghan artificial viscosity (solid/artificial_viscosity.hpp): alpha times
+  // their largest sound speed, beta, and the dimension.
+  double solid_alpha_c = 0, solid_beta = 0;
+  int dimension = 3;
 };
 inline TimeStepInputs time_step_inputs(const Material* m, int count, bool implicit_viscosity, double surface_tension) {
   TimeStepInputs in;
@@ -31,6 +35,23 @@ inline TimeStepInputs time_step_inputs(const Material* m, int count, bool implic
     }
   }
   return in;
+}
+
+// Adds the solids' artificial viscosity with coefficients alpha, beta to the inputs.
+inline void add_solid_artificial_viscosity(TimeStepInputs& in, const Material* m, int count, double alpha, double beta,
+                                           int dimension) {
+  double c = 0;
+  for (int k = 0; k < count; ++k)
+    if (m[k].kind == MaterialKind::Elastic) c = std::max(c, double(m[k].sound_speed));
+  in.solid_alpha_c = alpha * c, in.solid_beta = beta, in.dimension = dimension;
+}
+
+// The kinematic viscosity that Monaghan's artificial viscosity amounts to, nu = alpha h_s c / (2 (d + 2))
+// (alpha h c / 8 in 2D, / 10 in 3D: Monaghan 2005, Rep. Prog. Phys. 68:1703, §4.2), with the
+// quadratic term's beta h_s |v_ij|, |v_ij| <= 2 v_max, beside alpha c. Its viscous limit is
+// h_s / (alpha c) in 2D: at alpha = 10 (Deptulski's softening bar) 2.5 times below the acoustic one.
+inline double solid_artificial_viscosity_nu(const TimeStepInputs& in, double h_s, double v_max) {
+  return h_s * (in.solid_alpha_c + 2 * in.solid_beta * v_max) / (2 * (in.dimension + 2));
 }
 
 struct TimeStepLimits {
@@ -59,7 +80,8 @@ inline TimeStepLimits time_step_limits(double h_s, double c_max, double v_max, d
   return l;
 }
 inline TimeStepLimits time_step_limits(double h_s, const TimeStepInputs& in, double v_max, double a_max, double factor) {
-  return time_step_limits(h_s, in.c_max, v_max, a_max, in.nu_max, factor, in.rho_over_sigma);
+  const double nu = std::max(in.nu_max, solid_artificial_viscosity_nu(in, h_s, v_max));
+  return time_step_limits(h_s, in.c_max, v_max, a_max, nu, factor, in.rho_over_sigma);
 }
 
 }  // namespace psph

@@ -65,6 +65,14 @@ void check_fluid_keys(const CaseDraft& d) {
                     "a case with a liquid and a gas (the monitors region is the two-phase monitors')");
 }
 
+TimeStepInputs step_inputs(const CaseDraft& d, const std::vector<Material>& props) {
+  const SolverOptions& o = d.c.scene.options;
+  TimeStepInputs in = time_step_inputs(props.data(), int(props.size()), o.implicit_viscosity, o.surface_tension);
+  add_solid_artificial_viscosity(in, props.data(), int(props.size()), o.solid_artificial_viscosity,
+                                 o.solid_artificial_viscosity_beta, d.c.scene.dimension);
+  return in;
+}
+
 // A fixed step against the limits known before the run: acoustic (at rest), viscous and capillary
 // (Pazdniakou eqs. 50-52).
 void check_fixed_step(const CaseDraft& d) {
@@ -73,7 +81,7 @@ void check_fixed_step(const CaseDraft& d) {
   if (o.fixed_dt > d.c.end_time) fail(d, "time.end", "expected an end time of at least one fixed step (solver.dt)");
   std::vector<Material> props;
   for (const auto& m : d.c.scene.materials) props.push_back(m.props);
-  const TimeStepInputs in = time_step_inputs(props.data(), int(props.size()), o.implicit_viscosity, o.surface_tension);
+  const TimeStepInputs in = step_inputs(d, props);
   const double hs = o.support_radius / support_per_smoothing_length(o.kernel);
   const double limit = time_step_limits(hs, in, 0.0, 0.0, 1.0).min();
   if (o.fixed_dt > 2 * limit)
@@ -94,7 +102,7 @@ void check_step_count(const CaseDraft& d) {
     props.push_back(m.props);
     a = std::max(a, std::hypot(m.body_force[0], m.body_force[1], m.body_force[2]));
   }
-  const TimeStepInputs in = time_step_inputs(props.data(), int(props.size()), o.implicit_viscosity, o.surface_tension);
+  const TimeStepInputs in = step_inputs(d, props);
   const double hs = o.support_radius / support_per_smoothing_length(o.kernel);
   const double dt = o.fixed_dt > 0 ? o.fixed_dt : time_step_limits(hs, in, v, a, o.dt_factor).min();
   const double steps = d.c.end_time / dt;
