@@ -1,6 +1,8 @@
 // Loads on elastic solids (solid/solid_load.hpp): a confining traction on every face of a block
 // compresses it as the constitutive law says; an imposed velocity stretches a rod by velocity x
 // duration and holds it.
+#include <array>
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -113,6 +115,51 @@ TEST(SolidLoad, ImposedVelocityStretchesARodAndHoldsIt) {
   expect_refused(rod, "material = \"steel\"\nlower = [0.098]", "material = \"clamp\"\nlower = [0.098]",
                  "solid_load[0].material");
   expect_refused(rod, "velocity = [0.01]", "velocity = [0.01]\nramp = 1.0", "solid_load[0].ramp");
+}
+
+// An imposed velocity along the named axes only (`axes`, Deptulski eq. 4.31: a face pulled along y
+// and free to slide along x): the top layer of a block, pulled up, follows the imposed y velocity
+// exactly and contracts freely along x (nu = 0.25), where with every axis held it cannot move.
+TEST(SolidLoad, AnImposedVelocityHoldsOnlyItsAxes) {
+  const std::string pulled = test::replaced(
+      kConfined.substr(0, kConfined.find("[[solid_load]]")) + R"([[solid_load]]
+material = "clay"
+lower = [0.0, 0.019]
+upper = [0.02, 0.02]
+velocity = [0.0, 0.01]
+axes = ["y"]
+[[solid_load]]
+material = "clay"
+lower = [0.0, 0.0]
+upper = [0.02, 0.001]
+velocity = [0.0, 0.0]
+axes = ["y"]
+)", "end = 0.01", "end = 0.004");
+  auto top_layer = [](Engine& e) {
+    const auto x0 = e.field("reference_position"), u = e.field("displacement"), v = e.field("velocity");
+    double ux = 0, uy_min = 1e9, uy_max = -1e9, vy = 0;
+    for (int i = 0; i < e.particles(); ++i) {
+      if (x0[2 * i + 1] < 0.019) continue;
+      ux = std::max(ux, std::fabs(u[2 * i])), vy = std::max(vy, std::fabs(v[2 * i + 1] - 0.01));
+      uy_min = std::min(uy_min, u[2 * i + 1]), uy_max = std::max(uy_max, u[2 * i + 1]);
+    }
+    return std::array<double, 4>{ux, uy_min, uy_max, vy};
+  };
+  auto e = engine_of(pulled);
+  e->run_until(0.004);
+  const auto free_x = top_layer(*e);
+  EXPECT_GT(free_x[0], 1e-7);  // the layer contracts along x
+  EXPECT_NEAR(free_x[1], 4e-5, 4e-5 * 1e-6);  // v t along y, every particle of it
+  EXPECT_NEAR(free_x[2], 4e-5, 4e-5 * 1e-6);
+  EXPECT_EQ(free_x[3], 0.0);
+  auto held = engine_of(test::replaced(pulled, "axes = [\"y\"]\n", ""));
+  held->run_until(0.004);
+  EXPECT_EQ(top_layer(*held)[0], 0.0);
+  expect_refused(pulled, "axes = [\"y\"]\n[[solid_load]]", "axes = [\"z\"]\n[[solid_load]]", "solid_load[0].axes");
+  expect_refused(pulled, "axes = [\"y\"]\n[[solid_load]]", "axes = [\"y\", \"y\"]\n[[solid_load]]", "distinct axes among \"xy\"");
+  expect_refused(pulled, "axes = [\"y\"]\n[[solid_load]]", "axes = []\n[[solid_load]]", "solid_load[0].axes");
+  expect_refused(kConfined, "ramp_time = 2.0e-3\n[[solid_load]]", "ramp_time = 2.0e-3\naxes = [\"x\"]\n[[solid_load]]",
+                 "expected velocity for it to apply to");
 }
 
 // A rigid inclusion in the confined block (Pazdniakou §5.2.4: it meets the clay by contact only):

@@ -2,7 +2,8 @@
 // The damage stage's pass (damage/damage_stage.hpp), after the strain pass of the elastic stage:
 // each damaging particle's new damage from its strain (the Green-Lagrange strain in large
 // strain), its driving force, and its stress with the degraded moduli in place of the intact one
-// (the Cauchy stress, and in large strain the Piola stress the force pass reads).
+// (the Cauchy stress, and in large strain the Piola stress the force pass reads); in the
+// displacement form also the degraded moduli, which its pair forces read.
 #include "core/material.hpp"
 #include "damage/damage_options.hpp"
 #include "damage/degraded_stress.hpp"
@@ -30,22 +31,30 @@ struct DamageUpdatePass {
   DamageLaw law;
   Real* damage;
   Real* driving_force;  // Y (thermodynamic) or the target damage of eq. 23 (Rankine-Mohr-Coulomb)
+  Real* bulk = nullptr;   // the displacement form: each elastic particle's moduli (intact where it
+  Real* shear = nullptr;  // does not damage), which its pair forces take
 
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
-    if (!law.damages(mi)) return;
+    if (!mats.is_elastic(mi)) return;
     const Real k0 = mats[mi].bulk_modulus, mu0 = mats[mi].shear_modulus;
+    if (!law.damages(mi)) {
+      if (bulk) bulk[i] = k0, shear[i] = mu0;
+      return;
+    }
     const Mat<D> eps = s.strain[i];
-    Mat<D> stress;
+    DamagedModuli c;
     if (law.rankine) {
       damage[i] = rankine_mohr_coulomb_update(law.rmc, damage[i], eps, k0, mu0, &driving_force[i]);
-      stress = rankine_mohr_coulomb_stress(law.degrades, eps, k0, mu0, damage[i]);
+      c = rankine_mohr_coulomb_moduli(law.degrades, k0, mu0, damage[i]);
     } else {
       const ThermodynamicDamage& m = law.thermo[mi];
       damage[i] = thermodynamic_damage_update(m, damage[i], eps, k0, mu0);
       driving_force[i] = damage_driving_force(m, damage[i], driving_energy(eps, k0, mu0, m.unilateral));
-      stress = thermodynamic_stress(m, eps, k0, mu0, damage[i]);
+      c = thermodynamic_moduli(m, trace(eps), k0, mu0, damage[i]);
     }
+    if (bulk) bulk[i] = c.bulk, shear[i] = c.shear;
+    const Mat<D> stress = small_strain_stress(eps, c.bulk, c.shear);
     if (s.piola) {  // large strain: eps is E and stress is S
       LargeStrain<D> ls;
       ls.F = s.defgrad[i];

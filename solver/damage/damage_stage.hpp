@@ -3,13 +3,16 @@
 // damaging particle's damage is updated from its strain and its stress degraded
 // (damage/damage_pass.hpp), before the force passes read it. Rankine-Mohr-Coulomb (Pazdniakou
 // 2018 §2.2.2) or AT-1, AT-2, PCW (Deptulski 2021 §4.1). Fields `damage` and
-// `damage_driving_force`; monitors: damaged particles, total damage, energy dissipated by damage.
-// The damage is a registered field: checkpoints and reorderings carry it.
+// `damage_driving_force`, and in the displacement form `damaged_bulk_modulus` and
+// `damaged_shear_modulus`, which its pair forces read (solid/elastic_force.hpp); monitors: damaged
+// particles, total damage, energy dissipated by damage. All are registered fields: checkpoints and
+// reorderings carry them.
 #include <vector>
 
 #include "damage/damage_options.hpp"
 #include "damage/damage_parameters.hpp"
 #include "damage/damage_pass.hpp"
+#include "solid/elastic_force.hpp"
 #include "stage/monitor_value.hpp"
 #include "stage/step_context.hpp"
 
@@ -20,7 +23,8 @@ class DamageStage {
  public:
   bool active() const { return active_; }
 
-  void setup(StepContext<D, B>& cx, const DamageOptions& o) {
+  // `pair_moduli`: the solid is in displacement form.
+  void setup(StepContext<D, B>& cx, const DamageOptions& o, bool pair_moduli) {
     active_ = cx.elastic && o.damage_model != DamageModel::None;
     if (!active_) return;
     law_.rankine = o.damage_model == DamageModel::RankineMohrCoulomb;
@@ -34,12 +38,23 @@ class DamageStage {
     cx.s.add_field(damage_, 1, "damage", "-", "damage D in [0, 1) of the elastic solid ([damage])");
     cx.s.add_field(driving_force_, 1, "damage_driving_force", "Pa",
                    "Y = -g'(D) w~ (AT-1, AT-2, PCW); the target damage of eq. 23 (Rankine-Mohr-Coulomb)");
+    if (!pair_moduli) return;
+    bulk_.resize(n), shear_.resize(n);
+    bulk_.zero(), shear_.zero();
+    cx.s.add_field(bulk_, 1, "damaged_bulk_modulus", "Pa", "the bulk modulus k(D) the displacement form's pairs take");
+    cx.s.add_field(shear_, 1, "damaged_shear_modulus", "Pa", "the shear modulus mu(D) the displacement form's pairs take");
+  }
+
+  // The degraded moduli of the displacement form (none otherwise).
+  ParticleModuli moduli() const {
+    return bulk_.size() ? ParticleModuli{bulk_.data(), shear_.data()} : ParticleModuli{};
   }
 
   // After the strain pass, before the forces.
   void update(StepContext<D, B>& cx) {
     if (!active_) return;
-    B::for_each(cx.n(), DamageUpdatePass<D>{cx.view(), cx.mats, law_, damage_.data(), driving_force_.data()});
+    B::for_each(cx.n(), DamageUpdatePass<D>{cx.view(), cx.mats, law_, damage_.data(), driving_force_.data(),
+                                            bulk_.size() ? bulk_.data() : nullptr, shear_.data()});
   }
 
   void monitors(StepContext<D, B>& cx, std::vector<MonitorValue>& out) const {
@@ -54,6 +69,7 @@ class DamageStage {
   bool active_ = false;
   DamageLaw law_;
   DeviceArray<Real, B> damage_, driving_force_;
+  DeviceArray<Real, B> bulk_, shear_;  // the displacement form only
 };
 
 }  // namespace psph

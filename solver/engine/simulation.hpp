@@ -32,8 +32,9 @@ class Simulation final : public Engine {
     if (sc.dimension != D) throw std::logic_error("scene dimension mismatch");
     setup_context(sc);
     interface_.setup(cx_, opt_);
-    elastic_.setup(cx_, opt_, cx_.elastic ? clamp_mirror_partners(sc) : std::vector<std::int32_t>{});
-    damage_.setup(cx_, opt_);
+    elastic_.setup(cx_, opt_, cx_.elastic ? clamp_mirror_partners(sc) : std::vector<std::int32_t>{},
+                   opt_.damage_model != DamageModel::None);
+    damage_.setup(cx_, opt_, opt_.solid_formulation == SolidFormulation::Displacement);
     loads_.setup(cx_, sc.solid_loads, sc.load_mask);
     setup_rigid(sc);
     coupling_.setup(cx_, opt_.solid_coupling);
@@ -105,7 +106,7 @@ class Simulation final : public Engine {
   StepStats stats() override;
   std::vector<MonitorValue> monitors() override {
     std::vector<MonitorValue> out;
-    elastic_.monitors(cx_, out);
+    elastic_.monitors(cx_, out, damage_.moduli());
     damage_.monitors(cx_, out);
     rigid_.monitors(out);
     return out;
@@ -163,7 +164,7 @@ class Simulation final : public Engine {
       interface_.curvature(cx_);
       fluid_.forces(cx_);
     }
-    elastic_.forces(cx_);
+    elastic_.forces(cx_, damage_.moduli());
     rigid_.contact(cx_);
     coupling_.fluid_on_solids(cx_, fluid_.force_options());
     loads_.apply(cx_);

@@ -109,7 +109,7 @@ StepStats Simulation<D, B>::stats() {
   st.a_max = cx_.template max_of<Real>(AccelerationOf<D>{v});
   st.kinetic_energy = cx_.template sum_of<Real>(KineticEnergyOf<D>{v, cx_.mats});
   st.density_deviation_max = cx_.template max_of<Real>(DensityDeviationOf<D>{v, cx_.mats});
-  st.elastic_energy = elastic_.elastic_energy(cx_);
+  st.elastic_energy = elastic_.elastic_energy(cx_, damage_.moduli());
   st.dissipated_energy = elastic_.dissipated_energy();
   st.dt_limit = dt_limit_;
   st.linear_iterations = fluid_.linear_iterations();

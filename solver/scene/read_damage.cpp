@@ -128,11 +128,8 @@ void read_damage(CaseReader& top, CaseDraft& d) {
     if (rankine && r.has(key)) r.fail(key, "expected model = \"at1\", \"at2\" or \"pcw\"" + why, r.node(key));
   for (const char* key : kPcwKeys)
     if (o.damage_model != DamageModel::Pcw && r.has(key)) r.fail(key, "expected model = \"pcw\"" + why, r.node(key));
-  // The damage stage degrades the stress the stress form's force pass reads; the displacement
-  // form's pair forces and the ghosts' removal from every pass are not built yet.
-  if (d.c.scene.options.solid_formulation == SolidFormulation::Displacement)
-    r.fail("model", "expected [solid] formulation = \"stress\": the displacement form does not take damage yet",
-           r.node("model"));
+  // The damage stage degrades the stress the stress form reads and the moduli the displacement
+  // form pairs; the ghosts' removal from every pass is not built yet.
   o.damage_materials = read_damaged_materials(r, d);
   if (rankine) read_rankine_mohr_coulomb(r, o);
   else read_thermodynamic(r, o);

@@ -44,6 +44,26 @@ void read_solid(CaseReader& top, CaseDraft& d) {
   solid.finish();
 }
 
+namespace {
+
+// `axes` of an imposed velocity: the names of the axes it holds, each once (default all).
+unsigned read_load_axes(CaseReader& r, int dimension) {
+  if (!r.has("axes")) return (1u << dimension) - 1;
+  const std::vector<std::string> names = r.strings("axes", {});
+  const std::string all = std::string("xyz").substr(0, dimension);
+  const std::string expected = "expected a non-empty array of distinct axes among \"" + all + "\"";
+  unsigned axes = 0;
+  for (const std::string& a : names) {
+    const std::size_t k = a.size() == 1 ? all.find(a[0]) : std::string::npos;
+    if (k == std::string::npos || (axes >> k & 1u)) r.fail("axes", expected, r.node("axes"));
+    axes |= 1u << k;
+  }
+  if (axes == 0) r.fail("axes", expected, r.node("axes"));
+  return axes;
+}
+
+}  // namespace
+
 // Tractions and imposed velocities on groups of elastic particles (solid/solid_load.hpp).
 void read_solid_loads(CaseReader& top, CaseDraft& d) {
   top.each_table("solid_load", kMaxSolidLoads, "loads", [&](CaseReader& r) {
@@ -54,8 +74,13 @@ void read_solid_loads(CaseReader& top, CaseDraft& d) {
       r.fail("traction", "give exactly one of traction (Pa, on each particle's share of the surface) and velocity (m/s)");
     l.velocity = r.has("velocity");
     l.value = r.vec<double>(l.velocity ? "velocity" : "traction", d.dimension());
-    if (l.velocity) l.duration = r.non_negative("duration", 0.0);
-    else l.ramp_time = r.non_negative("ramp_time", 0.0);
+    if (l.velocity) {
+      l.duration = r.non_negative("duration", 0.0);
+      l.axes = read_load_axes(r, d.dimension());
+    } else {
+      l.ramp_time = r.non_negative("ramp_time", 0.0);
+      if (r.has("axes")) r.fail("axes", "expected velocity for it to apply to (a traction acts along every axis)", r.node("axes"));
+    }
     d.c.scene.solid_loads.push_back(l);
   });
 }

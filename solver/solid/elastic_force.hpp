@@ -15,7 +15,8 @@
 // truncated (free surfaces): a bending plate comes out far too stiff (VALIDATION.md).
 // Walls in reach clamp the solid through the displacement they present (solid/clamp.hpp).
 // Pair moduli are harmonic means (as in Deptulski eq. 2.45; his eq. 2.90 assumes uniform moduli, so
-// this is our choice), so that damage can later lower them per particle.
+// this is our choice, the digest's recommendation for damage too): of the materials' moduli, or of
+// per-particle ones where the damage stage degrades them (a fully damaged particle bonds with none).
 #include "core/material.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
@@ -41,22 +42,31 @@ PSPH_HD inline Vec<D> navier_pair(const Vec<D>& du, const Vec<D>& e, Real k, Rea
   return du * (mu * (c - Real(D)) - lambda_mu) + e * (lambda_mu * c * dot(e, du));
 }
 
+// Per-particle moduli of the elastic particles that replace their materials' (null: none).
+struct ParticleModuli {
+  const Real* bulk = nullptr;
+  const Real* shear = nullptr;
+};
+
 template <int D>
 struct ElasticForcePass {
   PairContext<D> c;  // lists, kernel, particles, materials
   Real damping = 0;  // zeta (1/s): a -= zeta v
+  ParticleModuli moduli;
+  PSPH_HD Real bulk(int i, int m) const { return moduli.bulk ? moduli.bulk[i] : c.mats[m].bulk_modulus; }
+  PSPH_HD Real shear(int i, int m) const { return moduli.shear ? moduli.shear[i] : c.mats[m].shear_modulus; }
   // The elastic acceleration (eq. 17) of elastic particle i.
   PSPH_HD Vec<D> elastic_acceleration(int i) const {
     const int mi = c.s.material[i];
-    const Real k_i = c.mats[mi].bulk_modulus, mu_i = c.mats[mi].shear_modulus;
+    const Real k_i = bulk(i, mi), mu_i = shear(i, mi);
     const Vec<D> u_i = c.s.u[i];
     Vec<D> f = Vec<D>::zero();
     c.nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
       const int mj = c.s.material[j];
       if (r <= Real(0) || c.mats.is_fluid(mj) || c.mats.is_rigid(mj)) return;  // rigid: contact only
-      Real k = k_i, mu = mu_i;
-      if (c.mats.is_elastic(mj) && mj != mi)
-        k = harmonic_mean(k_i, c.mats[mj].bulk_modulus), mu = harmonic_mean(mu_i, c.mats[mj].shear_modulus);
+      Real k = k_i, mu = mu_i;  // walls (clamps) present the particle's own moduli
+      if (c.mats.is_elastic(mj) && (mj != mi || moduli.bulk))
+        k = harmonic_mean(k_i, bulk(j, mj)), mu = harmonic_mean(mu_i, shear(j, mj));
       f += navier_pair<D>(u_i - c.s.u[j], rij * (Real(1) / r), k, mu) * (c.s.m[j] / c.s.rho[j] * c.kern.F(r));
     });
     return f * (Real(1) / c.s.rho[i]);

@@ -26,9 +26,12 @@ class ElasticStage {
  public:
   bool active() const { return active_; }
 
-  // `mirror`: each particle's clamp partner (engine/clamp_partners.hpp).
-  void setup(StepContext<D, B>& cx, const SolidOptions& o, const std::vector<std::int32_t>& mirror) {
+  // `mirror`: each particle's clamp partner (engine/clamp_partners.hpp); `strain_each_step`: a
+  // later stage (damage) reads the strain in every step, also in the displacement form.
+  void setup(StepContext<D, B>& cx, const SolidOptions& o, const std::vector<std::int32_t>& mirror,
+             bool strain_each_step) {
     o_ = o;
+    strain_each_step_ = strain_each_step;
     active_ = cx.elastic;
     if (!active_) return;
     ParticleState<D, B>& s = cx.s;
@@ -73,13 +76,14 @@ class ElasticStage {
     if (!active_) return;
     B::for_each(cx.n(), DisplacementPass<D>{cx.view(), cx.grid});
     if (cx.walls) B::for_each(cx.n(), ClampDisplacementPass<D>{cx.view(), cx.mats});
-    if (stress_form() || cx.fluid)
+    if (stress_form() || cx.fluid || strain_each_step_)
       with_solid_neighbours(cx, [&](auto nb) {
         B::for_each(cx.n(), StrainStressPass<D, decltype(nb)>{cx.pairs(nb)});
       });
   }
 
-  void forces(StepContext<D, B>& cx) const {
+  // `moduli`: per-particle moduli of the displacement form (damage/damage_stage.hpp), if any.
+  void forces(StepContext<D, B>& cx, ParticleModuli moduli) const {
     if (!active_) return;
     const Real zeta = Real(o_.solid_damping_rate);
     const bool traction = cx.fluid && o_.solid_coupling == SolidCoupling::Traction;
@@ -87,7 +91,7 @@ class ElasticStage {
     with_solid_neighbours(cx, [&](auto nb) {
       using NB = decltype(nb);
       if (stress_form()) B::for_each(cx.n(), StressForcePass<D, NB>{cx.pairs(nb), zeta, traction});
-      else B::for_each(cx.n(), ElasticForcePass<D>{cx.pairs(cx.reference_list()), zeta});
+      else B::for_each(cx.n(), ElasticForcePass<D>{cx.pairs(cx.reference_list()), zeta, moduli});
       if (o_.solid_artificial_viscosity > 0 || o_.solid_artificial_viscosity_beta > 0 || o_.solid_xsph > 0)
         B::for_each(cx.n(), SolidViscosityPass<D, NB>{nb, cx.grid, cx.kern, cx.view(), cx.mats,
                                                       Real(o_.solid_artificial_viscosity),
@@ -102,24 +106,24 @@ class ElasticStage {
       dissipated_ += dt * cx.template sum_of<Real>(DampingPowerOf<D>{cx.view(), cx.mats, Real(o_.solid_damping_rate)});
   }
 
-  double elastic_energy(StepContext<D, B>& cx) const {
+  double elastic_energy(StepContext<D, B>& cx, ParticleModuli moduli) const {
     if (!active_) return 0;
     const ParticleView<D> v = cx.view();
     return stress_form() ? cx.template sum_of<Real>(StrainEnergyOf<D>{v, cx.mats})
-                         : cx.template sum_of<Real>(ElasticEnergyOf<D>{{cx.pairs(cx.reference_list())}});
+                         : cx.template sum_of<Real>(ElasticEnergyOf<D>{{cx.pairs(cx.reference_list()), 0, moduli}});
   }
   double dissipated_energy() const { return dissipated_; }
 
-  void monitors(StepContext<D, B>& cx, std::vector<MonitorValue>& out) const {
+  void monitors(StepContext<D, B>& cx, std::vector<MonitorValue>& out, ParticleModuli moduli) const {
     if (!active_) return;
-    out.push_back({"elastic_energy", elastic_energy(cx)});
+    out.push_back({"elastic_energy", elastic_energy(cx, moduli)});
     if (o_.solid_damping_rate > 0) out.push_back({"dissipated_energy", dissipated_});
   }
 
-  // The displacement form needs no strain or stress in its step: computed when asked for, once
-  // per state.
+  // The displacement form needs no strain or stress in its step (unless a later stage does): computed
+  // when asked for, once per state.
   void prepare_field(StepContext<D, B>& cx, const std::string& name, long step) {
-    if (!active_ || stress_form() || (name != "strain" && name != "stress") || strain_step_ == step) return;
+    if (!active_ || stress_form() || strain_each_step_ || (name != "strain" && name != "stress") || strain_step_ == step) return;
     B::for_each(cx.n(), StrainStressPass<D>{cx.pairs(cx.reference_list())});
     strain_step_ = step;
   }
@@ -147,6 +151,7 @@ class ElasticStage {
 
   SolidOptions o_;
   bool active_ = false;
+  bool strain_each_step_ = false;
   DeviceArray<std::int32_t, B> reference_ids_, reference_count_;  // large strain: lists of t = 0 by id
   int reference_capacity_ = 0;
   double dissipated_ = 0;  // J, by the solid's damping

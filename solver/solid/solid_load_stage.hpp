@@ -38,6 +38,7 @@ class SolidLoadStage {
     for (int g = 0; g < l.count; ++g) {
       const SceneSolidLoad& sl = loads_[g];
       l.kind[g] = sl.velocity ? SolidLoadKind::Velocity : SolidLoadKind::Traction;
+      l.axes[g] = sl.axes;
       const double f = sl.velocity ? (sl.duration > 0 && t > sl.duration ? 0.0 : 1.0)
                                    : area * ramp_factor(t, sl.ramp_time);
       for (int d = 0; d < D; ++d) l.value[g][d] = Real(f * sl.value[d]);
