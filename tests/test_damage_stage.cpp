@@ -103,6 +103,31 @@ TEST(DamageStage, TheDisplacementFormTakesTheDegradedModuli) {
   EXPECT_EQ(names.end(), std::find(names.begin(), names.end(), "damaged_bulk_modulus"));  // only the displacement form's
 }
 
+// Rankine-Mohr-Coulomb reports its parts (eq. 23): the stretched rod (f_t at half the final
+// strain) has tensile damage and no compressive damage, and once the rod is held its reversible D
+// has relaxed (eq. 24) onto the tensile part. AT-1 has no such parts.
+TEST(DamageStage, RankineMohrCoulombReportsItsTensileAndCompressiveParts) {
+  const std::string rmc = test::replaced(test::replaced(damaged_rod("stress"), kDamage,
+                                                        "[damage]\nmodel = \"rankine_mohr_coulomb\"\nmaterials = [\"steel\"]\n"
+                                                        "tensile_strength = 250.0\ntensile_elastic_strain = 2.5e-4\n"
+                                                        "tensile_ultimate_strain = 1e-3\ncompressive_strength = 1e12\n\n"),
+                                         "end = 0.02", "end = 0.05");
+  auto e = engine_of(rmc);
+  e->run_until(0.05);
+  const auto d = e->field("damage"), dt = e->field("tensile_damage"), dc = e->field("compressive_damage");
+  const auto mat = e->field("material");
+  double most = 0;
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    if (mat[i] != 1) continue;
+    EXPECT_EQ(dc[i], 0.0) << i;
+    EXPECT_NEAR(d[i], dt[i], 1e-3) << i;
+    most = std::max(most, dt[i]);
+  }
+  EXPECT_GT(most, 0.1);
+  const auto names = engine_of(damaged_rod("stress"))->field_names();
+  EXPECT_EQ(names.end(), std::find(names.begin(), names.end(), "tensile_damage"));
+}
+
 TEST(DamageStage, ARestartCarriesTheDamageBitwise) {
   for (const char* form : kForms) {
     SCOPED_TRACE(form);

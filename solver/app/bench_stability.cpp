@@ -8,6 +8,7 @@
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
 #include "validation/oscillating_plate.hpp"
+#include "validation/softening_bar.hpp"
 
 namespace psph {
 
@@ -16,7 +17,8 @@ namespace {
 // How a run that reaches its end is judged: weakly compressible flow must end with every fluid
 // density within 10 % of its reference (a run that "survives" beyond is not a result); an
 // undamped solid must keep its kinetic + elastic energy within 1 %.
-enum class Criterion { FluidDensity, Energy };
+// A damaging solid takes energy, so it is stable when it ends without a diagnostic.
+enum class Criterion { FluidDensity, Energy, NoDiagnostic };
 
 double mechanical_energy(Engine& e) {
   const StepStats s = e.stats();
@@ -100,6 +102,16 @@ std::vector<StabilityRecord> stability_sweep(const std::string& backend, bool qu
                            : variant == 1 ? "oscillating_plate_2d (displacement)"
                                           : "oscillating_plate_2d (stress, Saint Venant-Kirchhoff)";
         out.push_back(run_one(name, c, 0.0, quick ? 0.01 : 0.05, Criterion::Energy, backend, log));
+      }
+  // Damage: the softening bar (101 x 5, validation/softening_bar.cpp) pulled until its centre has
+  // cracked, 3 L / (2 c_e), with each model: the fully damaged particles must not fly apart.
+  if (wanted("softening_bar_2d"))
+    for (const char* model : {"pcw", "at1", "at2", "rankine_mohr_coulomb"})
+      for (double f : factors) {
+        Case c = softening_bar_case(101, 5, 5e-3, model);
+        c.scene.options.dt_factor = f;
+        out.push_back(run_one(std::string("softening_bar_2d (") + model + ")", c, 0.0, 22.19e-6, Criterion::NoDiagnostic,
+                              backend, log));
       }
   return out;
 }

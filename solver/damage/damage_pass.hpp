@@ -33,6 +33,8 @@ struct DamageUpdatePass {
   Real* driving_force;  // Y (thermodynamic) or the target damage of eq. 23 (Rankine-Mohr-Coulomb)
   Real* bulk = nullptr;   // the displacement form: each elastic particle's moduli (intact where it
   Real* shear = nullptr;  // does not damage), which its pair forces take
+  Real* tensile = nullptr;      // Rankine-Mohr-Coulomb: D_t and D_c of eqs. 20 and 22 at this state
+  Real* compressive = nullptr;
 
   PSPH_HD void operator()(int i) const {
     const int mi = s.material[i];
@@ -45,7 +47,10 @@ struct DamageUpdatePass {
     const Mat<D> eps = s.strain[i];
     DamagedModuli c;
     if (law.rankine) {
-      damage[i] = rankine_mohr_coulomb_update(law.rmc, damage[i], eps, k0, mu0, &driving_force[i]);
+      RankineMohrCoulombTarget target;
+      damage[i] = rankine_mohr_coulomb_update(law.rmc, damage[i], eps, k0, mu0, &target);
+      driving_force[i] = target.combined;
+      if (tensile) tensile[i] = target.tensile, compressive[i] = target.compressive;
       c = rankine_mohr_coulomb_moduli(law.degrades, k0, mu0, damage[i]);
     } else {
       const ThermodynamicDamage& m = law.thermo[mi];

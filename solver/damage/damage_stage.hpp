@@ -3,7 +3,8 @@
 // damaging particle's damage is updated from its strain and its stress degraded
 // (damage/damage_pass.hpp), before the force passes read it. Rankine-Mohr-Coulomb (Pazdniakou
 // 2018 §2.2.2) or AT-1, AT-2, PCW (Deptulski 2021 §4.1). Fields `damage` and
-// `damage_driving_force`, and in the displacement form `damaged_bulk_modulus` and
+// `damage_driving_force`, with Rankine-Mohr-Coulomb `tensile_damage` and `compressive_damage` (the
+// parts of eq. 23), and in the displacement form `damaged_bulk_modulus` and
 // `damaged_shear_modulus`, which its pair forces read (solid/elastic_force.hpp); monitors: damaged
 // particles, total damage, energy dissipated by damage. All are registered fields: checkpoints and
 // reorderings carry them.
@@ -38,6 +39,13 @@ class DamageStage {
     cx.s.add_field(damage_, 1, "damage", "-", "damage D in [0, 1) of the elastic solid ([damage])");
     cx.s.add_field(driving_force_, 1, "damage_driving_force", "Pa",
                    "Y = -g'(D) w~ (AT-1, AT-2, PCW); the target damage of eq. 23 (Rankine-Mohr-Coulomb)");
+    if (law_.rankine) {
+      tensile_.resize(n), compressive_.resize(n);
+      tensile_.zero(), compressive_.zero();
+      cx.s.add_field(tensile_, 1, "tensile_damage", "-", "D_t of eq. 20 where eq. 19 holds, at this state (Rankine-Mohr-Coulomb)");
+      cx.s.add_field(compressive_, 1, "compressive_damage", "-",
+                     "D_c of eq. 22 where eq. 21 holds, at this state (Rankine-Mohr-Coulomb)");
+    }
     if (!pair_moduli) return;
     bulk_.resize(n), shear_.resize(n);
     bulk_.zero(), shear_.zero();
@@ -54,7 +62,8 @@ class DamageStage {
   void update(StepContext<D, B>& cx) {
     if (!active_) return;
     B::for_each(cx.n(), DamageUpdatePass<D>{cx.view(), cx.mats, law_, damage_.data(), driving_force_.data(),
-                                            bulk_.size() ? bulk_.data() : nullptr, shear_.data()});
+                                            bulk_.size() ? bulk_.data() : nullptr, shear_.data(),
+                                            tensile_.size() ? tensile_.data() : nullptr, compressive_.data()});
   }
 
   void monitors(StepContext<D, B>& cx, std::vector<MonitorValue>& out) const {
@@ -70,6 +79,7 @@ class DamageStage {
   DamageLaw law_;
   DeviceArray<Real, B> damage_, driving_force_;
   DeviceArray<Real, B> bulk_, shear_;  // the displacement form only
+  DeviceArray<Real, B> tensile_, compressive_;  // Rankine-Mohr-Coulomb only
 };
 
 }  // namespace psph

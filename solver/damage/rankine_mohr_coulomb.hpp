@@ -65,14 +65,27 @@ PSPH_HD inline Real mazars_tensile_weight(const PrincipalState& s, Real young, R
   return den > Real(0) ? clamp_unit(num / den) : Real(0);
 }
 
-// The target damage of eq. 23 at this state: D_t where eq. 19 holds, D_c where eq. 21 holds.
-PSPH_HD inline Real rankine_mohr_coulomb_target(const RankineMohrCoulomb& p, const PrincipalState& s, Real k0, Real mu0) {
+// The damages of eqs. 20 and 22 at this state (D_t where eq. 19 holds, D_c where eq. 21 holds)
+// and their combination, the target of eq. 23.
+struct RankineMohrCoulombTarget {
+  Real tensile = 0, compressive = 0, combined = 0;
+};
+PSPH_HD inline RankineMohrCoulombTarget rankine_mohr_coulomb_parts(const RankineMohrCoulomb& p, const PrincipalState& s,
+                                                                   Real k0, Real mu0) {
   const Real young = young_modulus(k0, mu0), poisson = poisson_ratio(k0, mu0);
-  const Real dt = rankine_reached(p, s) ? rankine_damage(p, young, s.strain[0]) : Real(0);
-  const Real dc = mohr_coulomb_reached(p, s) ? mohr_coulomb_damage(p, young, -s.strain[2]) : Real(0);
-  if (!p.mazars) return dt > dc ? dt : dc;
-  const Real zt = mazars_tensile_weight(s, young, poisson);
-  return zt * dt + (Real(1) - zt) * dc;
+  RankineMohrCoulombTarget t;
+  t.tensile = rankine_reached(p, s) ? rankine_damage(p, young, s.strain[0]) : Real(0);
+  t.compressive = mohr_coulomb_reached(p, s) ? mohr_coulomb_damage(p, young, -s.strain[2]) : Real(0);
+  if (!p.mazars) {
+    t.combined = t.tensile > t.compressive ? t.tensile : t.compressive;
+  } else {
+    const Real zt = mazars_tensile_weight(s, young, poisson);
+    t.combined = zt * t.tensile + (Real(1) - zt) * t.compressive;
+  }
+  return t;
+}
+PSPH_HD inline Real rankine_mohr_coulomb_target(const RankineMohrCoulomb& p, const PrincipalState& s, Real k0, Real mu0) {
+  return rankine_mohr_coulomb_parts(p, s, k0, mu0).combined;
 }
 
 // Pazdniakou eq. 24: D relaxes towards the target by 1/tau of the gap per step; irreversible, it
@@ -82,13 +95,14 @@ PSPH_HD inline Real relaxed_damage(const RankineMohrCoulomb& p, Real damage, Rea
   return (p.irreversible && next < damage) ? damage : next;
 }
 
-// One step of the law at strain eps for a point that had `damage` (its target in `target`, if given).
+// One step of the law at strain eps for a point that had `damage` (its target and parts in
+// `target`, if given).
 template <int D>
 PSPH_HD inline Real rankine_mohr_coulomb_update(const RankineMohrCoulomb& p, Real damage, const Mat<D>& eps, Real k0,
-                                                Real mu0, Real* target = nullptr) {
-  const Real t = rankine_mohr_coulomb_target(p, principal_state(eps, k0, mu0), k0, mu0);
+                                                Real mu0, RankineMohrCoulombTarget* target = nullptr) {
+  const RankineMohrCoulombTarget t = rankine_mohr_coulomb_parts(p, principal_state(eps, k0, mu0), k0, mu0);
   if (target) *target = t;
-  return relaxed_damage(p, damage, t);
+  return relaxed_damage(p, damage, t.combined);
 }
 
 }  // namespace psph

@@ -26,9 +26,26 @@ void set_box(toml::table& t, double x_lo, double x_hi, double y_hi, double s) {
 // Lattice points fall on multiples of the spacing: the domain starts half a spacing before one.
 double aligned(double x, double s) { return std::round(x / s) * s + s / 2; }
 
+// The [damage] table of another model whose local peak stress lies at the same strain eps_0 (with
+// nu = 0 the bar is uniaxial, w~ = E eps^2 / 2): AT-1 Y_c0 = E eps_0^2 (peak at its onset), AT-2
+// Y_c0 = 3 E eps_0^2 / 2 (peak at sqrt(2 Y_c0 / 3E)), Rankine f_t = E eps_0 with eq. 20's strains
+// eps_0, eps_u (Mohr-Coulomb out of reach).
+toml::table damage_table(const std::string& model) {
+  constexpr double E = 70.8e9, eps0 = 0.022, epsu = 0.060;
+  toml::table t{{"model", model}, {"materials", toml::array{"bar"}}};
+  if (model == "pcw") t.insert("elastic_limit_strain", eps0), t.insert("ultimate_strain", epsu);
+  if (model == "at1") t.insert("critical_energy_release", E * eps0 * eps0);
+  if (model == "at2") t.insert("critical_energy_release", 1.5 * E * eps0 * eps0);
+  if (model == "rankine_mohr_coulomb") {
+    t.insert("tensile_strength", E * eps0), t.insert("tensile_elastic_strain", eps0);
+    t.insert("tensile_ultimate_strain", epsu), t.insert("compressive_strength", 1e12);
+  }
+  return t;
+}
+
 }  // namespace
 
-Case softening_bar_case(int points, int rows, double support) {
+Case softening_bar_case(int points, int rows, double support, const std::string& model) {
   toml::table tbl = toml::parse(embedded_case_text("softening_bar_2d"), std::string_view("cases/softening_bar_2d.toml"));
   const double s = 2 * kHalfLength / (points - 1), width = (rows - 1) * s, L = kHalfLength;
   const double grip = std::round(support / s) * s;  // the grips hold one support's depth of layers
@@ -43,6 +60,7 @@ Case softening_bar_case(int points, int rows, double support) {
     set_box(*(*a)[a == &geometry ? 1 : 0].as_table(), -L - grip, -L, width, s);
     set_box(*(*a)[a == &geometry ? 2 : 1].as_table(), L, L + grip, width, s);
   }
+  if (model != "pcw") tbl.insert_or_assign("damage", damage_table(model));
   Case c = parse_case(tbl, "cases/softening_bar_2d.toml");
   build_particles(c);
   return c;

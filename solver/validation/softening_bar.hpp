@@ -10,7 +10,9 @@
 
 namespace psph {
 
-Case softening_bar_case(int points, int rows, double support);
+// `model`: the case's pcw, or at1, at2, rankine_mohr_coulomb with their peak stress at the same
+// strain eps_0 = 0.022 (for the stability sweep).
+Case softening_bar_case(int points, int rows, double support, const std::string& model = "pcw");
 
 struct SofteningBar {
   double half_length = 0.1, wave_speed = 0, pull_speed = 0, spacing = 0, support = 0;
