@@ -111,3 +111,19 @@ execute_process(COMMAND ${IMAGE_DIFF} ${WORK}/run2d/images/phases/3d_000000.png 
 if(NOT (rc EQUAL 0))
   message(FATAL_ERROR "2D frame 0 differs from tests/baselines/phases_2d_run.png: ${out} (actual and diff in ${WORK}/run2d)")
 endif()
+
+# A real cracked solid through the damage pipeline: the softening bar (cases/softening_bar_2d.toml,
+# Deptulski §4.2) at 3L/(2c_e), its centre cracked (D = 0.99), seen from close by, against its
+# baseline (tests/baselines/damage_bar_run.png, same threshold; the intact bar of frame 1 differs
+# from it by 184).
+file(READ ${SRC}/cases/softening_bar_2d.toml text)
+string(APPEND text "\n[visualisation]\ninterval = 1.1095e-5\nimage_size = [320, 160]\nscalar_bar = false\n"
+                   "[visualisation.camera]\nposition = [0.0, 0.004, 1.0]\nfocal_point = [0.0, 0.004, 0.0]\n"
+                   "parallel_scale = 0.012\n")
+file(WRITE ${WORK}/bar.toml "${text}")
+run_poresph(0 run ${WORK}/bar.toml --out ${WORK}/runbar --pipeline damage --quiet)
+execute_process(COMMAND ${IMAGE_DIFF} ${WORK}/runbar/images/damage/3d_000002.png ${SRC}/tests/baselines/damage_bar_run.png
+                        ${WORK}/runbar RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT (rc EQUAL 0))
+  message(FATAL_ERROR "the cracked bar differs from tests/baselines/damage_bar_run.png: ${out} (actual and diff in ${WORK}/runbar)")
+endif()

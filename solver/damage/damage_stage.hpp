@@ -4,8 +4,9 @@
 // (damage/damage_pass.hpp), before the force passes read it. Rankine-Mohr-Coulomb (Pazdniakou
 // 2018 §2.2.2) or AT-1, AT-2, PCW (Deptulski 2021 §4.1). Fields `damage` and
 // `damage_driving_force`, with Rankine-Mohr-Coulomb `tensile_damage` and `compressive_damage` (the
-// parts of eq. 23), and in the displacement form `damaged_bulk_modulus` and
-// `damaged_shear_modulus`, which its pair forces read (solid/elastic_force.hpp); monitors: damaged
+// parts of eq. 23), and in the displacement form (or with the pair_eos coupling) `damaged_bulk_modulus`
+// and `damaged_shear_modulus`, which its pair forces (and the solid's own pressure) read
+// (solid/elastic_force.hpp, solid/fluid_coupling.hpp); monitors: damaged
 // particles, total damage, energy dissipated by damage. All are registered fields: checkpoints and
 // reorderings carry them.
 #include <vector>
@@ -24,7 +25,7 @@ class DamageStage {
  public:
   bool active() const { return active_; }
 
-  // `pair_moduli`: the solid is in displacement form.
+  // `pair_moduli`: the solid is in displacement form, or presents its own pressure to a fluid.
   void setup(StepContext<D, B>& cx, const DamageOptions& o, bool pair_moduli) {
     active_ = cx.elastic && o.damage_model != DamageModel::None;
     if (!active_) return;
@@ -49,11 +50,11 @@ class DamageStage {
     if (!pair_moduli) return;
     bulk_.resize(n), shear_.resize(n);
     bulk_.zero(), shear_.zero();
-    cx.s.add_field(bulk_, 1, "damaged_bulk_modulus", "Pa", "the bulk modulus k(D) the displacement form's pairs take");
-    cx.s.add_field(shear_, 1, "damaged_shear_modulus", "Pa", "the shear modulus mu(D) the displacement form's pairs take");
+    cx.s.add_field(bulk_, 1, "damaged_bulk_modulus", "Pa", "the damaged bulk modulus k(D) (displacement form, pair_eos coupling)");
+    cx.s.add_field(shear_, 1, "damaged_shear_modulus", "Pa", "the damaged shear modulus mu(D) (displacement form, pair_eos coupling)");
   }
 
-  // The degraded moduli of the displacement form (none otherwise).
+  // The degraded moduli of the displacement form and the pair_eos coupling (none otherwise).
   ParticleModuli moduli() const {
     return bulk_.size() ? ParticleModuli{bulk_.data(), shear_.data()} : ParticleModuli{};
   }

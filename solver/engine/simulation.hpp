@@ -34,7 +34,8 @@ class Simulation final : public Engine {
     interface_.setup(cx_, opt_);
     elastic_.setup(cx_, opt_, cx_.elastic ? clamp_mirror_partners(sc) : std::vector<std::int32_t>{},
                    opt_.damage_model != DamageModel::None);
-    damage_.setup(cx_, opt_, opt_.solid_formulation == SolidFormulation::Displacement);
+    damage_.setup(cx_, opt_, opt_.solid_formulation == SolidFormulation::Displacement ||
+                                 (cx_.fluid && opt_.solid_coupling == SolidCoupling::PairEos));
     loads_.setup(cx_, sc.solid_loads, sc.load_mask);
     setup_rigid(sc);
     coupling_.setup(cx_, opt_.solid_coupling);
@@ -159,7 +160,7 @@ class Simulation final : public Engine {
   // velocity overrides every force, and the rigid bodies' sums.
   void forces() {
     if (cx_.fluid) {
-      coupling_.present_solids(cx_);
+      coupling_.present_solids(cx_, damage_.moduli());
       fluid_.present_walls(cx_);
       interface_.curvature(cx_);
       fluid_.forces(cx_);

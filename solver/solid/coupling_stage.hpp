@@ -22,8 +22,9 @@ class CouplingStage {
     s.visc_scale.zero(), s.fluid_contact.zero(), s.p_ambient.zero();
   }
 
-  void present_solids(StepContext<D, B>& cx) const {
-    if (active_) B::for_each(cx.n(), SolidInterfacePressurePass<D>{cx.pairs(), mode_});
+  // `moduli`: the damaged moduli, if any (damage/damage_stage.hpp).
+  void present_solids(StepContext<D, B>& cx, ParticleModuli moduli) const {
+    if (active_) B::for_each(cx.n(), SolidInterfacePressurePass<D>{cx.pairs(), mode_, moduli});
   }
   // `fo`: the fluid's force options (the reaction is the fluid's pair force, computed again).
   void fluid_on_solids(StepContext<D, B>& cx, const FluidForceOptions& fo) const {

@@ -16,7 +16,8 @@
 //   pair:     the reaction of every pair force (action and reaction, exact momentum exchange),
 //             with the extrapolated pressure;
 //   pair_eos: the same with the solid's own pressure c_solid^2 (rho - rho0) = -k tr(eps)
-//             (Pazdniakou eq. 74 with the density change of the strain).
+//             (Pazdniakou eq. 74 with the density change of the strain), k the damaged bulk
+//             modulus where the damage stage degrades it.
 // Rigid bodies (rigid/) present the extrapolated pressure and take the reaction of every pair force.
 // The extrapolated pressure is Adami, Hu & Adams (2012) eq. 27 without the particle's own
 // acceleration: with it, the traction feeds the last step's acceleration back into the next one
@@ -24,6 +25,7 @@
 #include "boundary/wall_pressure.hpp"
 #include "fluid/momentum.hpp"
 #include "solid/constitutive.hpp"
+#include "solid/elastic_force.hpp"
 #include "solid/solid_options.hpp"
 #include "solid/strain.hpp"
 #include "stage/pass_context.hpp"
@@ -34,13 +36,15 @@ template <int D>
 struct SolidInterfacePressurePass {
   PairContext<D> c;  // lists, kernel, particles, materials
   SolidCoupling mode;
+  ParticleModuli moduli;  // the damaged moduli, if any
   PSPH_HD void operator()(int i) const {
     const int mi = c.s.material[i];
     if (!c.mats.is_solid(mi)) return;
     Real p = 0;  // without fluid neighbours no fluid sees it
     c.s.fluid_contact[i] = extrapolate_fluid_pressure(c.nb, c.kern, c.s, c.mats, i, Vec<D>::zero(), p);
     const bool eos = mode == SolidCoupling::PairEos && c.mats.is_elastic(mi);
-    c.s.p[i] = eos ? small_strain_pressure(c.s.strain[i], c.mats[mi].bulk_modulus) : p;
+    const Real k = moduli.bulk ? moduli.bulk[i] : c.mats[mi].bulk_modulus;
+    c.s.p[i] = eos ? small_strain_pressure(c.s.strain[i], k) : p;
   }
 };
 
