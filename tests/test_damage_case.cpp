@@ -114,6 +114,20 @@ TEST(DamageCase, MaterialsMustBeElastic) {
 }
 
 // What the damage stage does not apply yet is refused, never accepted without effect.
+// Rankine-Mohr-Coulomb degrading the shear modulus alone makes the displacement form's pairs
+// unstable: refused there, taken with all moduli degraded.
+TEST(DamageCase, TheDisplacementFormTakesRankineMohrCoulombWithAllModuli) {
+  const std::string rmc = replaced(replaced(with_damage(std::string("model = \"rankine_mohr_coulomb\"\n") + kPlate),
+                                            "[damage]", "[solid]\nformulation = \"displacement\"\n\n[damage]"),
+                                   "poisson_ratio = 0.3975", "poisson_ratio = 0.2");
+  const std::string msg = error_of(rmc);
+  EXPECT_NE(msg.find("damage.degraded"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("expected \"all_moduli\""), std::string::npos) << msg;
+  EXPECT_EQ(load_case_text(replaced(rmc, "materials = [", "degraded = \"all_moduli\"\nmaterials = ["), "ok.toml")
+                .scene.options.damage_degrades,
+            DamageDegrades::AllModuli);
+}
+
 TEST(DamageCase, WhatIsNotBuiltYetIsRefused) {
   expect_refused(std::string("model = \"rankine_mohr_coulomb\"\n") + kPlate + "degraded = \"ghost\"",
                  {"damage.degraded", "not built yet"});

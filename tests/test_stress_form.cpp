@@ -176,14 +176,19 @@ TEST(StressForm, ArtificialViscosityLimitsTheStep) {
   m[0].kind = MaterialKind::Elastic, m[0].sound_speed = 6758.5;
   m[1].kind = MaterialKind::Fluid, m[1].sound_speed = 1500;  // the solid's c, not the fluid's, enters
   const double h = 2.5e-3;
-  TimeStepInputs in = time_step_inputs(m, 2, false, 0);
-  EXPECT_EQ(time_step_limits(h, in, 0, 0, 1).viscous, std::numeric_limits<double>::infinity());
-  add_solid_artificial_viscosity(in, m, 2, 10, 0, 2);
-  const TimeStepLimits l = time_step_limits(h, in, 70, 0, 1);
+  EXPECT_EQ(time_step_limits(h, time_step_inputs(m, 2, false, 0), 0, 0, 1).viscous, std::numeric_limits<double>::infinity());
+  const TimeStepLimits l = time_step_limits(h, time_step_inputs(m, 2, false, 0, 10, 0, 2), 70, 0, 1);
   EXPECT_NEAR(l.viscous, h / (10 * 6758.5), 1e-20);
   EXPECT_STREQ(l.limiting(), "viscous");
-  add_solid_artificial_viscosity(in, m, 2, 10, 1, 3);  // the quadratic term with |v_ij| <= 2 v_max, in 3D
-  EXPECT_NEAR(time_step_limits(h, in, 70, 0, 1).viscous, 0.125 * h * h / (h * (10 * 6758.5 + 2 * 70) / 10), 1e-20);
+  // The quadratic term with |v_ij| <= 2 v_max, in 3D.
+  EXPECT_NEAR(time_step_limits(h, time_step_inputs(m, 2, false, 0, 10, 1, 3), 70, 0, 1).viscous,
+              0.125 * h * h / (h * (10 * 6758.5 + 2 * 70) / 10), 1e-20);
+  // The engine steps by it: the free block (h_s = 0.01 m) with alpha = 10.
+  auto e = make_engine(built(replaced(kFreeBlock, "[time]", "[solid]\nartificial_viscosity = 10.0\n[time]")).scene, "cpu");
+  e->step(1.0);
+  const double c = std::sqrt((1e6 / (3 * (1 - 0.2)) + 4 * 1e6 / (2 * 1.1) / 3) / 2000);  // E = 1 MPa, nu = 0.1
+  EXPECT_EQ(e->stats().dt_limit, "viscous");
+  EXPECT_NEAR(e->last_dt(), 0.01 / (10 * c), 1e-9 * 0.01 / (10 * c));
 }
 
 // Saint Venant-Kirchhoff is objective: a free block set spinning at 10 rad/s turns as a rigid body

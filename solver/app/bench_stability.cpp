@@ -110,8 +110,8 @@ std::vector<StabilityRecord> stability_sweep(const std::string& backend, bool qu
       for (double f : factors) {
         Case c = softening_bar_case(101, 5, 5e-3, model);
         c.scene.options.dt_factor = f;
-        out.push_back(run_one(std::string("softening_bar_2d (") + model + ")", c, 0.0, 22.19e-6, Criterion::NoDiagnostic,
-                              backend, log));
+        out.push_back(run_one(std::string("softening_bar_2d (") + model + ")", c, 0.0, c.end_time,
+                              Criterion::NoDiagnostic, backend, log));
       }
   return out;
 }

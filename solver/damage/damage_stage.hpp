@@ -63,8 +63,9 @@ class DamageStage {
   void update(StepContext<D, B>& cx) {
     if (!active_) return;
     B::for_each(cx.n(), DamageUpdatePass<D>{cx.view(), cx.mats, law_, damage_.data(), driving_force_.data(),
-                                            bulk_.size() ? bulk_.data() : nullptr, shear_.data(),
-                                            tensile_.size() ? tensile_.data() : nullptr, compressive_.data()});
+                                            bulk_.size() ? bulk_.data() : nullptr, bulk_.size() ? shear_.data() : nullptr,
+                                            tensile_.size() ? tensile_.data() : nullptr,
+                                            tensile_.size() ? compressive_.data() : nullptr});
   }
 
   void monitors(StepContext<D, B>& cx, std::vector<MonitorValue>& out) const {
@@ -79,7 +80,7 @@ class DamageStage {
   bool active_ = false;
   DamageLaw law_;
   DeviceArray<Real, B> damage_, driving_force_;
-  DeviceArray<Real, B> bulk_, shear_;  // the displacement form only
+  DeviceArray<Real, B> bulk_, shear_;  // the displacement form, the pair_eos coupling
   DeviceArray<Real, B> tensile_, compressive_;  // Rankine-Mohr-Coulomb only
 };
 

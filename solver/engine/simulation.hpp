@@ -41,9 +41,8 @@ class Simulation final : public Engine {
     coupling_.setup(cx_, opt_.solid_coupling);
     fluid_.setup(cx_, opt_, opt_, sc.force_regions);
     open_.setup(cx_, sc.open_boundary, opt_.support_radius);
-    dt_inputs_ = time_step_inputs(cx_.mats.m, cx_.mats.count, opt_.implicit_viscosity, opt_.surface_tension);
-    add_solid_artificial_viscosity(dt_inputs_, cx_.mats.m, cx_.mats.count, opt_.solid_artificial_viscosity,
-                                   opt_.solid_artificial_viscosity_beta, D);
+    dt_inputs_ = time_step_inputs(cx_.mats.m, cx_.mats.count, opt_.implicit_viscosity, opt_.surface_tension,
+                                  opt_.solid_artificial_viscosity, opt_.solid_artificial_viscosity_beta, D);
     ramp(0);
     start();
   }

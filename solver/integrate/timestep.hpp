@@ -23,10 +23,14 @@ struct TimeStepInputs {
   double solid_alpha_c = 0, solid_beta = 0;
   int dimension = 3;
 };
-inline TimeStepInputs time_step_inputs(const Material* m, int count, bool implicit_viscosity, double surface_tension) {
+// `solid_alpha`, `solid_beta`: the elastic solids' artificial viscosity, in `dimension`.
+inline TimeStepInputs time_step_inputs(const Material* m, int count, bool implicit_viscosity, double surface_tension,
+                                       double solid_alpha = 0, double solid_beta = 0, int dimension = 3) {
   TimeStepInputs in;
+  double c_solid = 0;
   for (int k = 0; k < count; ++k) {
     in.c_max = std::max(in.c_max, double(m[k].sound_speed));
+    if (m[k].kind == MaterialKind::Elastic) c_solid = std::max(c_solid, double(m[k].sound_speed));
     if (m[k].kind != MaterialKind::Fluid) continue;
     if (!implicit_viscosity && m[k].viscosity > 0) in.nu_max = std::max(in.nu_max, double(m[k].viscosity / m[k].rest_density));
     if (surface_tension > 0) {
@@ -34,16 +38,8 @@ inline TimeStepInputs time_step_inputs(const Material* m, int count, bool implic
       in.rho_over_sigma = in.rho_over_sigma > 0 ? std::min(in.rho_over_sigma, r) : r;
     }
   }
+  in.solid_alpha_c = solid_alpha * c_solid, in.solid_beta = solid_beta, in.dimension = dimension;
   return in;
-}
-
-// Adds the solids' artificial viscosity with coefficients alpha, beta to the inputs.
-inline void add_solid_artificial_viscosity(TimeStepInputs& in, const Material* m, int count, double alpha, double beta,
-                                           int dimension) {
-  double c = 0;
-  for (int k = 0; k < count; ++k)
-    if (m[k].kind == MaterialKind::Elastic) c = std::max(c, double(m[k].sound_speed));
-  in.solid_alpha_c = alpha * c, in.solid_beta = beta, in.dimension = dimension;
 }
 
 // The kinematic viscosity that Monaghan's artificial viscosity amounts to, nu = alpha h_s c / (2 (d + 2))

@@ -67,10 +67,8 @@ void check_fluid_keys(const CaseDraft& d) {
 
 TimeStepInputs step_inputs(const CaseDraft& d, const std::vector<Material>& props) {
   const SolverOptions& o = d.c.scene.options;
-  TimeStepInputs in = time_step_inputs(props.data(), int(props.size()), o.implicit_viscosity, o.surface_tension);
-  add_solid_artificial_viscosity(in, props.data(), int(props.size()), o.solid_artificial_viscosity,
-                                 o.solid_artificial_viscosity_beta, d.c.scene.dimension);
-  return in;
+  return time_step_inputs(props.data(), int(props.size()), o.implicit_viscosity, o.surface_tension,
+                          o.solid_artificial_viscosity, o.solid_artificial_viscosity_beta, d.c.scene.dimension);
 }
 
 // A fixed step against the limits known before the run: acoustic (at rest), viscous and capillary

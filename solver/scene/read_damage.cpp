@@ -136,6 +136,13 @@ void read_damage(CaseReader& top, CaseDraft& d) {
   if (o.damage_degrades == DamageDegrades::Ghost)
     r.fail("degraded", "expected \"deviatoric\" or \"all_moduli\": ghosts (particles that leave every interaction) "
                        "are not built yet", r.node("degraded"));
+  // The displacement form's pairs stiffen across their axis by 5 mu / 3 - k (solid/elastic_force.hpp):
+  // degrading mu alone turns that negative once D > 1 - 3 k0 / (5 mu0), and the solid blows up.
+  if (rankine && o.damage_degrades == DamageDegrades::Deviatoric &&
+      d.c.scene.options.solid_formulation == SolidFormulation::Displacement)
+    r.fail("degraded", "expected \"all_moduli\" with [solid] formulation = \"displacement\" (its central pairs go "
+                       "unstable when only the shear modulus is degraded; the stress form takes \"deviatoric\")",
+           r.has("degraded") ? r.node("degraded") : r.node("model"));
   r.finish();
 }
 

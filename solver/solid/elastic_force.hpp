@@ -16,7 +16,8 @@
 // Walls in reach clamp the solid through the displacement they present (solid/clamp.hpp).
 // Pair moduli are harmonic means (as in Deptulski eq. 2.45; his eq. 2.90 assumes uniform moduli, so
 // this is our choice, the digest's recommendation for damage too): of the materials' moduli, or of
-// per-particle ones where the damage stage degrades them (a fully damaged particle bonds with none).
+// per-particle ones where the damage stage degrades them (a pair is as weak as its weaker particle:
+// the harmonic mean is below twice the smaller modulus).
 #include "core/material.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"

@@ -31,7 +31,7 @@ double monitor(Engine& e, const std::string& name) {
 }
 
 // The damage at which a point of the model passes its peak stress (Deptulski eqs. 4.22-4.23:
-// AT-2's uniaxial peak at w~ = Y_c0 / 2, where D = w~ / (w~ + Y_c0) = 1/4).
+// AT-2's uniaxial peak at w~ = Y_c0 / 3, where D = w~ / (w~ + Y_c0) = 1/4).
 double peak_damage(const std::string& model) { return model == "at2" ? 0.25 : 1e-3; }
 
 }  // namespace
