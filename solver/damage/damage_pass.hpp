@@ -71,11 +71,14 @@ struct DamageUpdatePass {
   }
 };
 
-// Per particle: 1 where damage > 1e-3 (the count of damaged particles), the damage, and the
+// The damage above which a particle counts as damaged (the monitor damaged_particles).
+constexpr double kDamaged = 1e-3;
+
+// Per particle: 1 where damage > kDamaged (the count of damaged particles), the damage, and the
 // energy its damage dissipated (Deptulski eq. 4.26b, times the particle's volume).
 struct DamagedOf {
   const Real* damage;
-  PSPH_HD Real operator()(int i) const { return damage[i] > Real(1e-3) ? Real(1) : Real(0); }
+  PSPH_HD Real operator()(int i) const { return damage[i] > Real(kDamaged) ? Real(1) : Real(0); }
 };
 struct DamageOf {
   const Real* damage;

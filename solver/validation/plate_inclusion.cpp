@@ -7,9 +7,11 @@
 #include <utility>
 #include <vector>
 
+#include "damage/damage_pass.hpp"
 #include "engine/engine.hpp"
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
+#include "validation/case_edit.hpp"
 
 namespace psph {
 
@@ -19,11 +21,6 @@ constexpr double kHalfSide = 0.15;     // L / 2, Table 4.2
 constexpr double kRate = 30e-6 / 1.6e-3;  // imposed displacement rate (m/s), the case's
 constexpr double kMargin = 0.01;       // domain room around the plate (m)
 
-toml::array pair_of(double a, double b) { return toml::array{a, b}; }
-
-// Lattice points fall on multiples of the spacing: the domain ends half a spacing past one.
-double aligned(double x, double s) { return std::round(x / s) * s + s / 2; }
-
 double monitor(Engine& e, const std::string& name) {
   for (const auto& m : e.monitors())
     if (m.name == name) return m.value;
@@ -32,7 +29,7 @@ double monitor(Engine& e, const std::string& name) {
 
 // The damage at which a point of the model passes its peak stress (Deptulski eqs. 4.22-4.23:
 // AT-2's uniaxial peak at w~ = Y_c0 / 3, where D = w~ / (w~ + Y_c0) = 1/4).
-double peak_damage(const std::string& model) { return model == "at2" ? 0.25 : 1e-3; }
+double peak_damage(const std::string& model) { return model == "at2" ? 0.25 : kDamaged; }
 
 }  // namespace
 
@@ -40,7 +37,8 @@ Case plate_inclusion_case(const std::string& model, bool compression, double top
                           double support) {
   toml::table tbl =
       toml::parse(embedded_case_text("plate_inclusion_2d"), std::string_view("cases/plate_inclusion_2d.toml"));
-  const double s = spacing, L = kHalfSide, grip = std::round(support / s) * s, edge = aligned(L + grip + kMargin, s);
+  const double s = spacing, L = kHalfSide, grip = std::round(support / s) * s;
+  const double edge = lattice_aligned(L + grip + kMargin, s);
   tbl["discretisation"].as_table()->insert_or_assign("spacing", s);
   tbl["discretisation"].as_table()->insert_or_assign("support_radius", support);
   tbl["domain"].as_table()->insert_or_assign("lower", pair_of(-edge, -edge));

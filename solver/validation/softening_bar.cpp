@@ -5,9 +5,11 @@
 #include <cmath>
 #include <vector>
 
+#include "damage/damage_pass.hpp"
 #include "engine/engine.hpp"
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
+#include "validation/case_edit.hpp"
 
 namespace psph {
 
@@ -16,15 +18,10 @@ namespace {
 constexpr double kHalfLength = 0.1;  // L, Table 4.1
 constexpr double kMargin = 5e-3;     // domain room around the strip (m)
 
-toml::array pair_of(double a, double b) { return toml::array{a, b}; }
-
 void set_box(toml::table& t, double x_lo, double x_hi, double y_hi, double s) {
   t.insert_or_assign("lower", pair_of(x_lo - s / 2, -s / 2));
   t.insert_or_assign("upper", pair_of(x_hi + s / 2, y_hi + s / 2));
 }
-
-// Lattice points fall on multiples of the spacing: the domain starts half a spacing before one.
-double aligned(double x, double s) { return std::round(x / s) * s + s / 2; }
 
 // The [damage] table of another model whose local peak stress lies at the same strain eps_0 (with
 // nu = 0 the bar is uniaxial, w~ = E eps^2 / 2): AT-1 Y_c0 = E eps_0^2 (peak at its onset), AT-2
@@ -51,8 +48,9 @@ Case softening_bar_case(int points, int rows, double support, const std::string&
   const double grip = std::round(support / s) * s;  // the grips hold one support's depth of layers
   tbl["discretisation"].as_table()->insert_or_assign("spacing", s);
   tbl["discretisation"].as_table()->insert_or_assign("support_radius", support);
-  tbl["domain"].as_table()->insert_or_assign("lower", pair_of(-aligned(L + grip + kMargin, s), -aligned(kMargin, s)));
-  tbl["domain"].as_table()->insert_or_assign("upper", pair_of(aligned(L + grip + kMargin, s), aligned(width + kMargin, s)));
+  const double x_edge = lattice_aligned(L + grip + kMargin, s);
+  tbl["domain"].as_table()->insert_or_assign("lower", pair_of(-x_edge, -lattice_aligned(kMargin, s)));
+  tbl["domain"].as_table()->insert_or_assign("upper", pair_of(x_edge, lattice_aligned(width + kMargin, s)));
   toml::array& geometry = *tbl["geometry"].as_array();
   toml::array& loads = *tbl["solid_load"].as_array();
   set_box(*geometry[0].as_table(), -L - grip, L + grip, width, s);
@@ -117,7 +115,7 @@ SofteningBar run_softening_bar(const Case& c, const std::string& backend) {
     if (out.onset_time >= 0) continue;
     const std::vector<double> d = engine->field("damage");
     const auto worst = std::max_element(d.begin(), d.end());
-    if (*worst > 1e-3) {
+    if (*worst > kDamaged) {
       out.onset_time = engine->time();
       out.onset_position = std::fabs(engine->field("reference_position")[2 * (worst - d.begin())]);
     }
@@ -127,7 +125,7 @@ SofteningBar run_softening_bar(const Case& c, const std::string& backend) {
   for (std::size_t i = 0; i < f.material.size(); ++i) {
     if (int(f.material[i]) != bar) continue;
     if (std::fabs(f.x0[2 * i]) < out.spacing / 2) ++rows;  // the centre column
-    if (std::fabs(f.x0[2 * i]) < L / 2 && f.damage[i] > 1e-3) ++damaged;
+    if (std::fabs(f.x0[2 * i]) < L / 2 && f.damage[i] > kDamaged) ++damaged;
     out.peak_damage = std::max(out.peak_damage, f.damage[i]);
   }
   out.band_width = rows > 0 ? damaged * out.spacing / rows : 0;
