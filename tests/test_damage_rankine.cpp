@@ -22,7 +22,7 @@ RankineMohrCoulomb clay() {
   p.friction_factor = (1 + std::sin(25 * M_PI / 180)) / (1 - std::sin(25 * M_PI / 180));
   p.tensile_elastic_strain = 0.0013, p.tensile_ultimate_strain = 0.0026, p.compressive_elastic_strain = 0.015;
   p.residual_tensile_strength = 0.3e6, p.residual_compressive_strength = 2e6;
-  p.relaxation_steps = 10;
+  p.relaxation_rate = 0.1;  // tau = 10 steps
   return p;
 }
 

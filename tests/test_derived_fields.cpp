@@ -30,6 +30,26 @@ TEST(DerivedFields, PrincipalStressesOfARotatedTensor) {
   EXPECT_NEAR(std::fabs(dot), 1, 1e-12);
 }
 
+// The eigenvalues alone (the damage criteria's principal strains): the 2D closed form and the 3D
+// rotations without vectors agree with the full decomposition, also with repeated eigenvalues.
+TEST(DerivedFields, EigenvaluesAloneAgreeWithTheDecomposition) {
+  const double twos[][2][2] = {{{3, 4}, {4, -3}}, {{1e-3, 0}, {0, 1e-3}}, {{-2e-4, 7e-5}, {7e-5, 5e-4}}, {{0, 0}, {0, 0}}};
+  for (const auto& a : twos) {
+    double full[2], vectors[2][2], alone[2];
+    symmetric_eigen<2>(a, full, vectors);
+    symmetric_eigenvalues<2>(a, alone);
+    for (int k = 0; k < 2; ++k) EXPECT_NEAR(alone[k], full[k], 1e-15 * (1 + std::fabs(full[0]))) << k;
+  }
+  const double threes[][3][3] = {{{30, 2, -1}, {2, -10, 0.5}, {-1, 0.5, 5}}, {{1, 0, 0}, {0, 1, 0}, {0, 0, -2}},
+                                 {{1e-3, 2e-4, 0}, {2e-4, 1e-3, 2e-4}, {0, 2e-4, 1e-3}}};
+  for (const auto& a : threes) {
+    double full[3], vectors[3][3], alone[3];
+    symmetric_eigen<3>(a, full, vectors);
+    symmetric_eigenvalues<3>(a, alone);
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(alone[k], full[k]) << k;  // the same rotations
+  }
+}
+
 TEST(DerivedFields, PrincipalFieldsFromAStressField2D) {
   const std::vector<double> stress = {3, 4, 4, -3};  // eigenvalues +-5
   auto src = [&](const std::string&) { return stress; };

@@ -36,6 +36,12 @@ template <class T>
 PSPH_HD inline T poisson_ratio(T k, T mu) {
   return (T(3) * k - T(2) * mu) / (T(2) * (T(3) * k + mu));
 }
+// Both with one division (per-particle laws).
+template <class T>
+PSPH_HD inline void young_and_poisson(T k, T mu, T& young, T& poisson) {
+  const T inv = T(1) / (T(3) * k + mu);
+  young = T(9) * k * mu * inv, poisson = T(0.5) * (T(3) * k - T(2) * mu) * inv;
+}
 
 constexpr int kMaxMaterials = 8;
 template <int D>

@@ -22,7 +22,7 @@ inline RankineMohrCoulomb rankine_mohr_coulomb_parameters(const DamageOptions& o
   p.residual_tensile_strength = Real(o.residual_tensile_strength);
   p.residual_compressive_strength = Real(o.residual_compressive_strength);
   p.mazars = o.damage_combination == DamageCombination::Mazars;
-  p.relaxation_steps = Real(o.relaxation_steps);
+  p.relaxation_rate = Real(1 / o.relaxation_steps);
   p.irreversible = o.damage_irreversible;
   return p;
 }

@@ -12,10 +12,10 @@ struct PrincipalState {
 
 template <int D>
 PSPH_HD inline PrincipalState principal_state(const Mat<D>& eps, Real k0, Real mu0) {
-  double a[D][D], values[D], vectors[D][D];
+  double a[D][D], values[D];
   for (int r = 0; r < D; ++r)
     for (int c = 0; c < D; ++c) a[r][c] = eps.a[r][c];
-  symmetric_eigen<D>(a, values, vectors);
+  symmetric_eigenvalues<D>(a, values);
   PrincipalState p;
   for (int k = 0; k < 3; ++k) p.strain[k] = k < D ? Real(values[k]) : Real(0);
   for (int i = 0; i < 3; ++i)  // the zeros among the descending values

@@ -17,7 +17,7 @@ struct RankineMohrCoulomb {
   Real tensile_elastic_strain = 0, tensile_ultimate_strain = 0, compressive_elastic_strain = 0;
   Real residual_tensile_strength = 0, residual_compressive_strength = 0;  // f_tr, f_cr (Pa)
   bool mazars = true;  // eq. 23 by Mazars weights, else max(D_t, D_c)
-  Real relaxation_steps = 10;  // tau, eq. 24
+  Real relaxation_rate = Real(0.1);  // 1 / tau of eq. 24 (per step): a product, not a division, per point
   bool irreversible = false;
 };
 
@@ -55,14 +55,14 @@ PSPH_HD inline bool mohr_coulomb_reached(const RankineMohrCoulomb& p, const Prin
 PSPH_HD inline Real mazars_tensile_weight(const PrincipalState& s, Real young, Real poisson) {
   Real tr_plus = 0;
   for (int k = 0; k < 3; ++k) tr_plus += s.stress[k] > Real(0) ? s.stress[k] : Real(0);
-  Real num = 0, den = 0;
+  Real num = 0, den = 0;  // num without its 1 / E0: one division for the point
   for (int k = 0; k < 3; ++k) {
     if (!(s.strain[k] > Real(0))) continue;
     const Real plus = s.stress[k] > Real(0) ? s.stress[k] : Real(0);
-    num += ((Real(1) + poisson) * plus - poisson * tr_plus) / young * s.strain[k];
+    num += ((Real(1) + poisson) * plus - poisson * tr_plus) * s.strain[k];
     den += s.strain[k] * s.strain[k];
   }
-  return den > Real(0) ? clamp_unit(num / den) : Real(0);
+  return den > Real(0) ? clamp_unit(num / (young * den)) : Real(0);
 }
 
 // The damages of eqs. 20 and 22 at this state (D_t where eq. 19 holds, D_c where eq. 21 holds)
@@ -72,7 +72,8 @@ struct RankineMohrCoulombTarget {
 };
 PSPH_HD inline RankineMohrCoulombTarget rankine_mohr_coulomb_parts(const RankineMohrCoulomb& p, const PrincipalState& s,
                                                                    Real k0, Real mu0) {
-  const Real young = young_modulus(k0, mu0), poisson = poisson_ratio(k0, mu0);
+  Real young, poisson;
+  young_and_poisson(k0, mu0, young, poisson);
   RankineMohrCoulombTarget t;
   t.tensile = rankine_reached(p, s) ? rankine_damage(p, young, s.strain[0]) : Real(0);
   t.compressive = mohr_coulomb_reached(p, s) ? mohr_coulomb_damage(p, young, -s.strain[2]) : Real(0);
@@ -91,7 +92,7 @@ PSPH_HD inline Real rankine_mohr_coulomb_target(const RankineMohrCoulomb& p, con
 // Pazdniakou eq. 24: D relaxes towards the target by 1/tau of the gap per step; irreversible, it
 // only grows.
 PSPH_HD inline Real relaxed_damage(const RankineMohrCoulomb& p, Real damage, Real target) {
-  const Real next = damage + (target - damage) / p.relaxation_steps;
+  const Real next = damage + (target - damage) * p.relaxation_rate;
   return (p.irreversible && next < damage) ? damage : next;
 }
 

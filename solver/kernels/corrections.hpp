@@ -29,6 +29,30 @@ struct GradientCorrection {
   PSPH_HD PSPH_PAIR Vec<D> gradient(Real W, const Vec<D>& gradW) const { return K * shepard_gradient(W, gradW); }
 };
 
+// sum_j w_j f_j (x) K_a grad W~_aj, summed per pair without the correction and corrected once:
+// K grad W~ = K (grad W S - G W) / S^2 (eq. 2.61a), so the sum is (S A - b (x) G) K^T / S^2 with
+// A = sum w f (x) grad W and b = sum w W f (no division or matrix product per pair).
+template <int D>
+struct CorrectedGradientSum {
+  Mat<D> A = Mat<D>::zero();
+  Vec<D> b = Vec<D>::zero();
+  PSPH_HD PSPH_PAIR void add(const Vec<D>& f, Real W, const Vec<D>& gradW, Real w) {
+    add_outer(A, f, gradW, w);
+    b += f * (w * W);
+  }
+  PSPH_HD Mat<D> corrected(const GradientCorrection<D>& c) const {
+    const Real inv = Real(1) / (c.shepard * c.shepard);
+    Mat<D> out;
+    for (int r = 0; r < D; ++r)
+      for (int s = 0; s < D; ++s) {
+        Real sum = 0;
+        for (int k = 0; k < D; ++k) sum += (c.shepard * A.a[r][k] - b.c[r] * c.grad_sum.c[k]) * c.K.a[s][k];
+        out.a[r][s] = sum * inv;
+      }
+    return out;
+  }
+};
+
 // NB is any neighbour provider with for_each(i, f(j, r_ij, r)) (cell view or list).
 // Shepard sum S_a = sum_b V_b W_ab including the particle itself. `volume(j)` returns V_j.
 template <int D, class NB, class Volume>

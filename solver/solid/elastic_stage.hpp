@@ -59,10 +59,13 @@ class ElasticStage {
     cx.follow_ids |= cx.walls || large_strain();  // clamps and reference lists find particles by id
   }
 
-  // After a list build: at t = 0 (current = reference positions) the large-strain solid records
-  // its lists of t = 0.
+  // After a list build (and reordering): at t = 0 (current = reference positions) the large-strain
+  // solid records its lists of t = 0; a small-strain solid without fluid keeps its corrections.
   void lists_built(StepContext<D, B>& cx) {
-    if (!active_ || !large_strain() || reference_count_.size() != 0) return;
+    if (!active_) return;
+    corrections_kept_ = !large_strain() && !cx.fluid;
+    if (corrections_kept_) B::for_each(cx.n(), SolidCorrectionPass<D>{cx.pairs(cx.reference_list())});
+    if (!large_strain() || reference_count_.size() != 0) return;
     const int n = cx.n();
     reference_capacity_ = cx.neighbours.capacity();
     reference_ids_.resize(std::size_t(reference_capacity_) * n), reference_count_.resize(n);
@@ -78,7 +81,7 @@ class ElasticStage {
     if (cx.walls) B::for_each(cx.n(), ClampDisplacementPass<D>{cx.view(), cx.mats});
     if (stress_form() || cx.fluid || strain_each_step_)
       with_solid_neighbours(cx, [&](auto nb) {
-        B::for_each(cx.n(), StrainStressPass<D, decltype(nb)>{cx.pairs(nb)});
+        B::for_each(cx.n(), StrainStressPass<D, decltype(nb)>{cx.pairs(nb), corrections_kept_});
       });
   }
 
@@ -124,7 +127,7 @@ class ElasticStage {
   // when asked for, once per state.
   void prepare_field(StepContext<D, B>& cx, const std::string& name, long step) {
     if (!active_ || stress_form() || strain_each_step_ || (name != "strain" && name != "stress") || strain_step_ == step) return;
-    B::for_each(cx.n(), StrainStressPass<D>{cx.pairs(cx.reference_list())});
+    B::for_each(cx.n(), StrainStressPass<D>{cx.pairs(cx.reference_list()), corrections_kept_});
     strain_step_ = step;
   }
 
@@ -152,6 +155,10 @@ class ElasticStage {
   SolidOptions o_;
   bool active_ = false;
   bool strain_each_step_ = false;
+  // Small strain without fluid: the corrections depend on the reference positions and constant
+  // volumes only (the walls' densities change only with a fluid), so they are computed after each
+  // list build and kept, and the strain pass is one sum instead of three.
+  bool corrections_kept_ = false;
   DeviceArray<std::int32_t, B> reference_ids_, reference_count_;  // large strain: lists of t = 0 by id
   int reference_capacity_ = 0;
   double dissipated_ = 0;  // J, by the solid's damping

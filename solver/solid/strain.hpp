@@ -31,21 +31,48 @@ struct SolidNeighbours {
   }
 };
 
+// Per elastic particle: the gradient correction S_i, G_i, K_i over the solid's neighbours, stored.
+template <int D, class NB = NeighbourList<D>>
+struct SolidCorrectionPass {
+  PairContext<D, NB> c;
+  PSPH_HD GradientCorrection<D> correction(int i) const {
+    auto volume = [&](int j) { return c.s.m[j] / c.s.rho[j]; };
+    return gradient_correction(SolidNeighbours<D, NB>{c.nb, c.s, c.mats}, c.kern, i, volume);
+  }
+  PSPH_HD void operator()(int i) const {
+    if (!c.mats.is_elastic(c.s.material[i])) return;
+    const GradientCorrection<D> corr = correction(i);
+    c.s.shepard[i] = corr.shepard, c.s.shepard_grad[i] = corr.grad_sum, c.s.kcorr[i] = corr.K;
+  }
+};
+
+// The stored correction of particle i (SolidCorrectionPass).
+template <int D>
+PSPH_HD inline GradientCorrection<D> stored_correction(const ParticleView<D>& s, int i) {
+  GradientCorrection<D> c;
+  c.shepard = s.shepard[i], c.grad_sum = s.shepard_grad[i], c.K = s.kcorr[i];
+  return c;
+}
+
 // Per elastic particle: the strain, the stress, and the gradient correction S_i, G_i, K_i kept for
-// the force pass.
+// the force pass. `corrections_kept`: the stored ones are current (SolidCorrectionPass since the
+// last list build), so that only the displacement sum remains.
 template <int D, class NB = NeighbourList<D>>
 struct StrainStressPass {
   PairContext<D, NB> c;  // the solid's neighbours, kernel, particles, materials
+  bool corrections_kept = false;
   PSPH_HD void operator()(int i) const {
     const int mi = c.s.material[i];
     if (!c.mats.is_elastic(mi)) return;
     const SolidNeighbours<D, NB> solid{c.nb, c.s, c.mats};
     auto volume = [&](int j) { return c.s.m[j] / c.s.rho[j]; };
-    const GradientCorrection<D> corr = gradient_correction(solid, c.kern, i, volume);
-    Mat<D> grad_u = Mat<D>::zero();
+    const GradientCorrection<D> corr =
+        corrections_kept ? stored_correction(c.s, i) : SolidCorrectionPass<D, NB>{c}.correction(i);
+    CorrectedGradientSum<D> sum;
     solid.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
-      add_outer(grad_u, c.s.u[j] - c.s.u[i], corr.gradient(c.kern.W(r), c.kern.grad(rij, r)), volume(j));
+      sum.add(c.s.u[j] - c.s.u[i], c.kern.W(r), c.kern.grad(rij, r), volume(j));
     });
+    const Mat<D> grad_u = sum.corrected(corr);
     const Real k = c.mats[mi].bulk_modulus, mu = c.mats[mi].shear_modulus;
     if (c.s.piola) {  // Saint Venant-Kirchhoff (large strain): Green-Lagrange strain, Piola stress
       const LargeStrain<D> ls = saint_venant_kirchhoff(grad_u, k, mu);
@@ -55,16 +82,14 @@ struct StrainStressPass {
       c.s.strain[i] = eps;
       c.s.stress[i] = small_strain_stress(eps, k, mu);
     }
-    c.s.shepard[i] = corr.shepard, c.s.shepard_grad[i] = corr.grad_sum, c.s.kcorr[i] = corr.K;
+    if (!corrections_kept) c.s.shepard[i] = corr.shepard, c.s.shepard_grad[i] = corr.grad_sum, c.s.kcorr[i] = corr.K;
   }
 };
 
 // g_ij = K_i grad W~_ij from particle i's stored correction (eq. 2.63b with 2.61a).
 template <int D>
 PSPH_HD PSPH_PAIR inline Vec<D> corrected_gradient(const ParticleView<D>& s, int i, Real W, const Vec<D>& gradW) {
-  GradientCorrection<D> c;
-  c.shepard = s.shepard[i], c.grad_sum = s.shepard_grad[i], c.K = s.kcorr[i];
-  return c.gradient(W, gradW);
+  return stored_correction(s, i).gradient(W, gradW);
 }
 
 }  // namespace psph
