@@ -7,11 +7,12 @@ endif()
 string(REPLACE "\n" ";" lines "${listing}")
 # Seconds the longest take on one thread (a clean clone has no ctest cost data): started first, so
 # that -j2 runs them beside the rest rather than after it.
-set(cost_validate_plate_inclusion_2d 580)
+set(cost_validate_plate_inclusion_2d 380)
 set(cost_validate_sessile_drop_2d 220)
 set(cost_validate_capillary_entry_2d 200)
 set(cost_validate_laplace_bubble_3d 190)
 set(cost_validate_sphere_permeability 110)
+set(cost_validate_pressurised_pore_2d 110)
 set(cost_validate_laplace_bubble_2d 60)
 set(text "")
 foreach(line IN LISTS lines)

@@ -2,6 +2,8 @@
 // expected.
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <gtest/gtest.h>
@@ -221,6 +223,43 @@ TEST(CaseFile, ShapesOutsideTheDomainAreRefused) {
                {"geometry[1].upper", "overlaps the domain", "axis 0"});
   expect_error(replaced(base_case(), "lower = [0.0, 0.0]\nupper = [1.0e-3, 4.0e-4]", "lower = [1.0e-3, 0.0]\nupper = [0.0, 4.0e-4]"),
                {"geometry[1].upper", "upper > lower"});
+}
+
+// A lens: thinner than long, in 2D or 3D, about a named axis; it holds the sites of two discs'
+// intersection (tips at +-half_length, faces at +-half_thickness).
+TEST(CaseFile, ALensIsTheIntersectionOfTwoDiscs) {
+  const std::string pore = embedded_case_text("pressurised_pore_2d");
+  Case c = load_case_text(pore, "ok.toml");
+  build_particles(c);
+  int water = 0;
+  double x_max = 0, y_max = 0;
+  for (int i = 0; i < c.scene.count(); ++i) {
+    if (c.scene.materials[c.scene.material[i]].name != "water") continue;
+    ++water, x_max = std::max(x_max, std::fabs(c.scene.x[2 * i])), y_max = std::max(y_max, std::fabs(c.scene.x[2 * i + 1]));
+  }
+  EXPECT_NEAR(x_max, 0.012, 1e-9);  // the tip sites at +-12 mm (half_length 12.25 mm)
+  EXPECT_NEAR(y_max, 0.003, 1e-9);  // the centre's at +-3 mm (half_thickness 3.25 mm)
+  // Sites (x, y) with |y| <= b - (R - sqrt(R^2 - x^2)), R = (a^2 + b^2) / (2 b), on the 1 mm lattice.
+  const double a = 12.25, b = 3.25, R = (a * a + b * b) / (2 * b);
+  int expected = 0;
+  for (int x = -12; x <= 12; ++x)
+    for (int y = -3; y <= 3; ++y) expected += std::abs(y) <= b - (R - std::sqrt(R * R - x * x));
+  EXPECT_EQ(water, expected);
+  expect_error(replaced(pore, "half_thickness = 0.00325", "half_thickness = 0.02"),
+               {"geometry[1].half_thickness", "less than half_length"});
+  expect_error(replaced(pore, "axis = \"y\"", "axis = \"z\""), {"geometry[1].axis", "\"x\", \"y\""});
+  expect_error(replaced(pore, "half_length = 0.01225\n", ""), {"geometry[1].half_length"});
+  expect_error(replaced(pore, "axis = \"y\"", "axis = \"y\"\nlayout = \"concentric\""), {"geometry[1].layout", "lenses"});
+}
+
+// The background pressure rises at its rate (the fluid's pressure with it); without a fluid the
+// key is refused.
+TEST(CaseFile, BackgroundPressureRateNeedsAFluid) {
+  const std::string rod = embedded_case_text("vibrating_rod_1d");
+  expect_error(replaced(rod, "[time]", "[solver]\nbackground_pressure_rate = 1.0e6\n\n[time]"),
+               {"solver.background_pressure_rate", "kind = \"fluid\""});
+  Case c = load_case_text(embedded_case_text("pressurised_pore_2d"), "ok.toml");
+  EXPECT_EQ(c.scene.options.background_pressure_rate, 5e8);
 }
 
 TEST(CaseFile, RunsThatCouldNotEndOrWouldFillTheDiskAreRefused) {

@@ -189,6 +189,7 @@ class Simulation final : public Engine {
   void ramp(double t) {
     cx_.force_time = t;
     fluid_.ramp_regions(cx_, t);
+    fluid_.ramp_pressure(cx_, t);
   }
 
   void setup_context(const Scene& sc);

@@ -20,6 +20,9 @@ struct FluidOptions {
   // no viscous time-step limit.
   bool implicit_viscosity = false;
   double implicit_tolerance = 1e-6;  // relative residual of the viscous solve
+  // Pa/s: the background pressure grows at this rate from its value at t = 0 (a closed pore's
+  // water pressurised quasi-statically; the fluid's own dynamics do not see a uniform pressure).
+  double background_pressure_rate = 0;
 };
 
 }  // namespace psph

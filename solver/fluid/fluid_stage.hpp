@@ -1,7 +1,7 @@
 #pragma once
 // The fluid stage: density (summation, or the continuity equation and the equation of state), the
 // pressure and no-slip velocity that walls present to the fluid, the fluid's pair forces, the
-// implicit viscous step, and the ramped body-force regions.
+// implicit viscous step, the ramped body-force regions and background pressure.
 #include <string>
 #include <vector>
 
@@ -26,6 +26,7 @@ class FluidStage {
   void setup(StepContext<D, B>& cx, const FluidOptions& o, const InterfaceOptions& io,
              const std::vector<SceneForceRegion>& regions) {
     o_ = o;
+    background_pressure_ = cx.mats.count > 0 ? double(cx.mats.m[0].background_pressure) : 0.0;
     regions_ = regions;
     cx.mats.region_count = static_cast<int>(regions_.size());
     for (int r = 0; r < cx.mats.region_count; ++r) {
@@ -44,6 +45,13 @@ class FluidStage {
   }
   const FluidForceOptions& force_options() const { return fo_; }
   int linear_iterations() const { return linear_iterations_; }
+
+  // The background pressure at time t (every material's: one value for all, core/material.hpp).
+  void ramp_pressure(StepContext<D, B>& cx, double t) const {
+    if (o_.background_pressure_rate == 0) return;
+    for (int m = 0; m < cx.mats.count; ++m)
+      cx.mats.m[m].background_pressure = Real(background_pressure_ + o_.background_pressure_rate * t);
+  }
 
   // Body-force regions at time t, each scaled by its ramp factor.
   void ramp_regions(StepContext<D, B>& cx, double t) const {
@@ -116,6 +124,7 @@ class FluidStage {
  private:
   FluidOptions o_;
   FluidForceOptions fo_;
+  double background_pressure_ = 0;  // Pa, at t = 0
   std::vector<SceneForceRegion> regions_;  // full body forces of the regions (cx.mats holds them ramped)
   BiCGStab<D, B> krylov_;
   DeviceArray<Vec<D>, B> visc_b_, visc_x_;  // implicit viscous step: right-hand side, solution

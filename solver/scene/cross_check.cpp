@@ -55,7 +55,8 @@ void check_interface(const CaseDraft& d) {
 void check_fluid_keys(const CaseDraft& d) {
   const SolverOptions& o = d.c.scene.options;
   for (const char* key : {"density", "xsph", "artificial_viscosity", "laplacian_correction", "wall_noslip",
-                          "wall_pressure", "implicit_viscosity", "background_pressure", "max_density_deviation"})
+                          "wall_pressure", "implicit_viscosity", "background_pressure", "background_pressure_rate",
+                          "max_density_deviation"})
     d.refuse_unless(d.has_fluid(), std::string("solver.") + key, "a material with kind = \"fluid\" for it to apply to");
   d.refuse_unless(o.density == DensityMethod::Continuity, "solver.density_diffusion",
                   "density = \"continuity\" for it to apply to (it diffuses the integrated density)");

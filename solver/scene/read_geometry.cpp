@@ -1,5 +1,6 @@
 // [[geometry]]: the shapes that place each material's particles, in order (a later shape takes the
 // particles of an earlier one where they overlap; "empty" removes them).
+#include <algorithm>
 #include <cmath>
 
 #include "scene/case_tables.hpp"
@@ -53,11 +54,28 @@ void require_overlap(CaseReader& r, const Scene& sc, const Bounds& b, const std:
       r.fail(key, "expected a shape that overlaps the domain; it lies wholly outside it along axis " + std::to_string(k));
 }
 
+// A lens: its centre, half_length (centre to tips), half_thickness (< half_length) and the axis
+// of its thickness ("x", "y" or "z"; the last axis by default).
+std::shared_ptr<const Shape> read_lens(CaseReader& r, int D) {
+  if (D < 2) r.fail("shape", "expected a lens in 2D or 3D only");
+  LensSpec l;
+  l.center = r.vec<double>("center", D);
+  l.half_length = r.positive("half_length");
+  l.half_thickness = r.positive("half_thickness");
+  if (!(l.half_thickness < l.half_length))
+    r.fail("half_thickness", "expected less than half_length (" + CaseReader::fmt(l.half_length) + " m), got " +
+                                 CaseReader::fmt(l.half_thickness) + " m");
+  const std::string axes[3] = {"x", "y", "z"};
+  const std::string axis = r.choice("axis", std::vector<std::string>(axes, axes + D), axes[D - 1]);
+  l.axis = int(std::find(axes, axes + D, axis) - axes);
+  return make_lens(l, D);
+}
+
 // The shape's own keys.
 std::shared_ptr<const Shape> read_shape(CaseReader& r, CaseDraft& d, const std::string& shape) {
   const int D = d.dimension();
   if (shape != "sphere" && r.has("layout"))
-    r.fail("layout", "expected a layout only on a sphere (boxes and grain packs take the lattice)");
+    r.fail("layout", "expected a layout only on a sphere (boxes, lenses and grain packs take the lattice)");
   if (shape == "grain_pack") return read_grain_pack(r, d);
   if (shape == "box") {
     Bounds b;
@@ -65,6 +83,7 @@ std::shared_ptr<const Shape> read_shape(CaseReader& r, CaseDraft& d, const std::
     r.box(D, b.lower, b.upper);
     return make_box(b);
   }
+  if (shape == "lens") return read_lens(r, D);
   const std::array<double, 3> centre = r.vec<double>("center", D);
   const double radius = r.positive("radius");
   // "lattice": the domain's lattice sites inside; "concentric": shells fitted to the surface.
@@ -109,9 +128,9 @@ void read_geometry(CaseReader& top, CaseDraft& d) {
   if (!arr || arr->empty() || !arr->is_array_of_tables()) top.fail("geometry", "expected an array of tables [[geometry]]", g);
   top.each_table("geometry", arr->size(), "shapes", [&](CaseReader& r) {
     GeometryShape s;
-    const std::string shape = r.choice("shape", {"box", "sphere", "grain_pack"});
+    const std::string shape = r.choice("shape", {"box", "sphere", "lens", "grain_pack"});
     s.shape = read_shape(r, d, shape);
-    require_overlap(r, d.c.scene, s.shape->bounds(), shape == "box" ? "upper" : shape == "sphere" ? "center" : "lower");
+    require_overlap(r, d.c.scene, s.shape->bounds(), shape == "box" ? "upper" : shape == "grain_pack" ? "lower" : "center");
     read_filling(r, d, s, shape == "grain_pack");
     d.c.geometry.push_back(s);
   });

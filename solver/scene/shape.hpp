@@ -48,6 +48,14 @@ class Shape {
 };
 
 std::shared_ptr<const Shape> make_box(const Bounds& box);
+// A symmetric biconvex lens (a lens-shaped pore or crack): thickness 2 half_thickness along `axis`,
+// its tips half_length from the centre across it.
+struct LensSpec {
+  std::array<double, 3> center{0, 0, 0};
+  double half_length = 0, half_thickness = 0;
+  int axis = 1;
+};
+std::shared_ptr<const Shape> make_lens(const LensSpec& lens, int dimension);
 // layout "concentric" (scene/concentric_layout.hpp) or the lattice.
 std::shared_ptr<const Shape> make_sphere(const std::array<double, 3>& centre, double radius, bool concentric,
                                          int dimension);

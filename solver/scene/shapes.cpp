@@ -62,7 +62,42 @@ class GrainPackShape final : public Shape {
 
 }  // namespace
 
+// The intersection of two balls of radius R = (a^2 + b^2) / (2 b) whose centres lie R - b either
+// side of the centre along `axis`: thickness 2 b along it, tips (a rim in 3D) a from the centre.
+class LensShape final : public Shape {
+ public:
+  LensShape(const LensSpec& l, int D) : l_(l), D_(D), R_((l.half_length * l.half_length + l.half_thickness * l.half_thickness) / (2 * l.half_thickness)) {}
+  bool contains(const double* x) const override {
+    for (double side : {-1.0, 1.0}) {
+      double r2 = 0;
+      for (int k = 0; k < D_; ++k) {
+        const double c = l_.center[k] + (k == l_.axis ? side * (R_ - l_.half_thickness) : 0.0);
+        r2 += (x[k] - c) * (x[k] - c);
+      }
+      if (r2 > R_ * R_) return false;
+    }
+    return true;
+  }
+  Bounds bounds() const override {
+    Bounds b;
+    b.dimension = D_;
+    for (int k = 0; k < D_; ++k) {
+      const double half = k == l_.axis ? l_.half_thickness : l_.half_length;
+      b.lower[k] = l_.center[k] - half, b.upper[k] = l_.center[k] + half;
+    }
+    return b;
+  }
+
+ private:
+  LensSpec l_;
+  int D_;
+  double R_;
+};
+
 std::shared_ptr<const Shape> make_box(const Bounds& box) { return std::make_shared<BoxShape>(box); }
+std::shared_ptr<const Shape> make_lens(const LensSpec& lens, int dimension) {
+  return std::make_shared<LensShape>(lens, dimension);
+}
 std::shared_ptr<const Shape> make_sphere(const std::array<double, 3>& centre, double radius, bool concentric,
                                          int dimension) {
   return std::make_shared<SphereShape>(centre, radius, concentric, dimension);

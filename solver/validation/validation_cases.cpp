@@ -8,15 +8,14 @@
 #include "scene/scene_builder.hpp"
 #include "validation/capillary_entry.hpp"
 #include "validation/channel_flow.hpp"
+#include "validation/damage_validations.hpp"
 #include "validation/elastic_cube.hpp"
 #include "validation/lame_cylinder.hpp"
 #include "validation/rigid_motion.hpp"
 #include "validation/laplace_bubble.hpp"
 #include "validation/operator_checks.hpp"
 #include "validation/oscillating_plate.hpp"
-#include "validation/plate_inclusion.hpp"
 #include "validation/sessile_drop.hpp"
-#include "validation/softening_bar.hpp"
 #include "validation/sphere_array.hpp"
 #include "validation/vibrating_rod.hpp"
 
@@ -268,104 +267,6 @@ std::vector<ValidationRecord> oscillating_plate(const ValidationContext& ctx) {
                       0.01)};
 }
 
-// The dynamic softening bar of Deptulski 2021 §4.2: CI runs the 101 x 5 strip (plateau within 4 %
-// of v / c_e there, 3 % with --full; first damage within a support of the centre and not before
-// the waves meet; band 2h wide within a spacing); --full adds 151 x 9 and 201 x 11, the thesis'
-// onset at L / c_e (5 %), and on the 201 x 11 strip the band widths at 2h = 10 and 20 mm against
-// 2 and 4 times that at 5 mm (20 %). VALIDATION.md has what falls short and why.
-std::vector<ValidationRecord> softening_bar(const ValidationContext& ctx) {
-  const std::string name = "softening_bar_2d";
-  std::vector<ValidationRecord> out;
-  struct Strip { int points, rows; };
-  const std::vector<Strip> strips = ctx.full ? std::vector<Strip>{{101, 5}, {151, 9}, {201, 11}} : std::vector<Strip>{{101, 5}};
-  double width_5mm = 0;
-  for (const Strip& st : strips) {
-    const SofteningBar r = run_softening_bar(softening_bar_case(st.points, st.rows, 5e-3), ctx.backend);
-    const std::string at = ", " + std::to_string(st.points) + " x " + std::to_string(st.rows);
-    const double plateau = r.pull_speed / r.wave_speed, meet = r.half_length / r.wave_speed;
-    out.push_back(make_record(name, "strain plateau at L/(2 c_e) / (v/c_e)" + at, r.plateau_strain, plateau,
-                              std::fabs(r.plateau_strain / plateau - 1), ctx.full ? 0.03 : 0.04));
-    out.push_back(make_record(name, "damage before the waves meet: 1 - onset / (L/c_e), if > 0" + at, r.onset_time / meet,
-                              1.0, r.onset_time < 0 ? NAN : std::max(0.0, 1 - r.onset_time / meet), 0.0));
-    out.push_back(make_record(name, "|x| of the first damage / support radius" + at, r.onset_position / r.support, 0,
-                              r.onset_time < 0 ? NAN : r.onset_position / r.support, 1.0));
-    out.push_back(make_record(name, "band width at 3L/(2 c_e) - 2h, in spacings" + at, r.band_width, r.support,
-                              std::fabs(r.band_width - r.support) / r.spacing, 1.0));
-    if (ctx.full)
-      out.push_back(make_record(name, "damage onset time / (L/c_e)" + at, r.onset_time / meet, 1.0,
-                                r.onset_time < 0 ? NAN : std::fabs(r.onset_time / meet - 1), 0.05));
-    width_5mm = r.band_width;
-    if (ctx.log)
-      *ctx.log << "  " << st.points << " x " << st.rows << ": plateau " << r.plateau_strain << " (v/c_e " << plateau
-               << "), onset at " << r.onset_time * 1e6 << " us (L/c_e " << meet * 1e6 << " us), |x| = " << r.onset_position
-               << " m; band " << r.band_width * 1e3 << " mm, peak D " << r.peak_damage << "; " << r.particles
-               << " particles, " << r.steps << " steps, " << r.seconds << " s\n";
-  }
-  if (!ctx.full) return out;
-  for (double support : {10e-3, 20e-3}) {
-    const SofteningBar r = run_softening_bar(softening_bar_case(201, 11, support), ctx.backend);
-    const double ratio = width_5mm > 0 ? r.band_width / width_5mm : NAN, expected = support / 5e-3;
-    out.push_back(make_record(name, "band width at 2h = " + std::to_string(int(support * 1e3)) + " mm / at 5 mm, 201 x 11",
-                              ratio, expected, std::fabs(ratio / expected - 1), 0.2));
-    if (ctx.log)
-      *ctx.log << "  2h = " << support * 1e3 << " mm: band " << r.band_width * 1e3 << " mm, peak D " << r.peak_damage
-               << ", onset " << r.onset_time * 1e6 << " us; " << r.steps << " steps, " << r.seconds << " s\n";
-  }
-  return out;
-}
-
-// The plate with a rigid inclusion of Deptulski 2021 §4.3 with AT-2, pulled and pushed at its top
-// edge. CI runs the coarse plate (5 mm, 2h = 25 mm) and checks what does not hang on the
-// resolution: the tensile onset at the top of the inclusion, the compressive one on its upper
-// diagonal, tension before compression, left-right symmetry (10 %, ours), loading slow enough
-// (kinetic below 1 % of the elastic energy at the onset). --full runs the thesis' plate (1 mm,
-// 2h = 5 mm: 82,000 particles, hours on a CPU) against its onsets and complete cracks (10 %), AT-1's
-// compressive onset (10 %) and the energy AT-1 dissipates in tension (20 %).
-std::vector<ValidationRecord> plate_inclusion(const ValidationContext& ctx) {
-  const std::string name = "plate_inclusion_2d";
-  const double s = ctx.full ? 1e-3 : 5e-3, support = ctx.full ? 5e-3 : 25e-3;
-  std::vector<ValidationRecord> out;
-  auto run = [&](const std::string& model, bool compression, double top) {
-    const PlateDamage r = run_plate_inclusion(plate_inclusion_case(model, compression, top, s, support), model, ctx.backend);
-    if (ctx.log)
-      *ctx.log << "  " << model << (compression ? " compression" : " tension") << ": onset at " << r.onset * 1e6
-               << " um at (" << r.onset_x << ", " << r.onset_y << ") m, kinetic / elastic " << r.kinetic_over_elastic
-               << "; crack through at " << r.complete * 1e6 << " um; asymmetry " << r.asymmetry << "; dissipated "
-               << r.dissipated << " J/m, elastic " << r.elastic << " J/m; " << r.particles << " particles, " << r.steps
-               << " steps, " << r.seconds << " s\n";
-    return r;
-  };
-  auto none_if = [](bool missing, double error) { return missing ? NAN : error; };
-  const PlateDamage tension = run("at2", false, ctx.full ? 25e-6 : 22e-6);  // CI: onsets at 19.5 and 20 um
-  const PlateDamage compression = run("at2", true, ctx.full ? 32e-6 : 23e-6);
-  const double angle = std::atan2(std::fabs(compression.onset_x), compression.onset_y) * 180 / M_PI;
-  out.push_back(make_record(name, "AT-2 tension: |x| of the onset / support radius (top of the inclusion)",
-                            std::fabs(tension.onset_x) / support, 0,
-                            none_if(tension.onset < 0 || tension.onset_y <= 0, std::fabs(tension.onset_x) / support), 1.0));
-  out.push_back(make_record(name, "AT-2 compression: onset angle from the vertical, degrees (upper diagonal)", angle, 45,
-                            none_if(compression.onset < 0 || compression.onset_y <= 0, std::fabs(angle - 45)), 25));
-  out.push_back(make_record(name, "onset in tension / in compression, if > 1", tension.onset / compression.onset, 1,
-                            none_if(tension.onset < 0 || compression.onset < 0,
-                                    std::max(0.0, tension.onset / compression.onset - 1)), 0));
-  for (const auto& [what, r] : {std::pair<const char*, const PlateDamage*>{"tension", &tension}, {"compression", &compression}}) {
-    out.push_back(make_record(name, std::string("AT-2 ") + what + ": left-right asymmetry of the damage", r->asymmetry, 0,
-                              r->asymmetry, 0.1));
-    out.push_back(make_record(name, std::string("AT-2 ") + what + ": kinetic / elastic energy at the onset",
-                              r->kinetic_over_elastic, 0, none_if(r->onset < 0, r->kinetic_over_elastic), 0.01));
-  }
-  if (!ctx.full) return out;
-  auto against = [&](const std::string& metric, double value, double thesis, double tol) {
-    out.push_back(make_record(name, metric, value, thesis, none_if(value < 0, std::fabs(value / thesis - 1)), tol));
-  };
-  against("AT-2 tension onset (m)", tension.onset, 17.4e-6, 0.1);
-  against("AT-2 tension crack through (m)", tension.complete, 19.8e-6, 0.1);
-  against("AT-2 compression onset (m)", compression.onset, 24.0e-6, 0.1);
-  against("AT-2 compression crack through (m)", compression.complete, 27.8e-6, 0.1);
-  against("AT-1 compression onset (m)", run("at1", true, 55e-6).onset, 45e-6, 0.1);
-  against("AT-1 tension: energy dissipated (J per m of thickness)", run("at1", false, 40e-6).dissipated, 5.0, 0.2);
-  return out;
-}
-
 // Bulk modulus of an elastic cube loaded by the fluid around it (Pazdniakou 2018 §4.5, eq. 83;
 // paper: 0.33 % at small, 11.4 % at large volume changes). The traction coupling (the default)
 // holds a uniform pressure exactly, so K is the constitutive one at any resolution in small
@@ -495,6 +396,8 @@ const std::vector<ValidationCase>& validation_cases() {
        softening_bar},
       {"plate_inclusion_2d", "Deptulski 2021 §4.3 plate with a rigid inclusion, AT-2 in tension and compression",
        plate_inclusion},
+      {"pressurised_pore_2d", "water pressurised in a lens-shaped pore in clay: damage starts at the tips, later under confinement",
+       pressurised_pore},
       {"elastic_cube_3d", "Pazdniakou 2018 §4.5 elastic cube compressed by fluid pressure: bulk modulus (0.5 %)",
        elastic_cube},
       {"lame_cylinder_2d", "thick-walled cylinder pressurised by fluid: radial and hoop stress against Lame (3 %)",
