@@ -252,14 +252,20 @@ TEST(CaseFile, ALensIsTheIntersectionOfTwoDiscs) {
   expect_error(replaced(pore, "axis = \"y\"", "axis = \"y\"\nlayout = \"concentric\""), {"geometry[1].layout", "lenses"});
 }
 
-// The background pressure rises at its rate (the fluid's pressure with it); without a fluid the
-// key is refused.
+// The background pressure's rate: not negative, not without a fluid nor with an open boundary.
 TEST(CaseFile, BackgroundPressureRateNeedsAFluid) {
   const std::string rod = embedded_case_text("vibrating_rod_1d");
   expect_error(replaced(rod, "[time]", "[solver]\nbackground_pressure_rate = 1.0e6\n\n[time]"),
                {"solver.background_pressure_rate", "kind = \"fluid\""});
-  Case c = load_case_text(embedded_case_text("pressurised_pore_2d"), "ok.toml");
+  const std::string pore = embedded_case_text("pressurised_pore_2d");
+  Case c = load_case_text(pore, "ok.toml");
   EXPECT_EQ(c.scene.options.background_pressure_rate, 5e8);
+  expect_error(replaced(pore, "background_pressure_rate = 5.0e8", "background_pressure_rate = -5.0e8"),
+               {"solver.background_pressure_rate", ">= 0"});
+  // The open boundary's buffers hold absolute pressures: refused beside a rising background.
+  const std::string channel = embedded_case_text("open_channel_2d");
+  expect_error(replaced(channel, "[time]", "[solver]\nbackground_pressure_rate = 1.0\n\n[time]"),
+               {"solver.background_pressure_rate", "[open_boundary]"});
 }
 
 TEST(CaseFile, RunsThatCouldNotEndOrWouldFillTheDiskAreRefused) {

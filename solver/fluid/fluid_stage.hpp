@@ -26,7 +26,7 @@ class FluidStage {
   void setup(StepContext<D, B>& cx, const FluidOptions& o, const InterfaceOptions& io,
              const std::vector<SceneForceRegion>& regions) {
     o_ = o;
-    background_pressure_ = cx.mats.count > 0 ? double(cx.mats.m[0].background_pressure) : 0.0;
+    for (int m = 0; m < cx.mats.count; ++m) background_pressure_[m] = cx.mats.m[m].background_pressure;
     regions_ = regions;
     cx.mats.region_count = static_cast<int>(regions_.size());
     for (int r = 0; r < cx.mats.region_count; ++r) {
@@ -46,11 +46,11 @@ class FluidStage {
   const FluidForceOptions& force_options() const { return fo_; }
   int linear_iterations() const { return linear_iterations_; }
 
-  // The background pressure at time t (every material's: one value for all, core/material.hpp).
+  // Each material's background pressure at time t.
   void ramp_pressure(StepContext<D, B>& cx, double t) const {
     if (o_.background_pressure_rate == 0) return;
     for (int m = 0; m < cx.mats.count; ++m)
-      cx.mats.m[m].background_pressure = Real(background_pressure_ + o_.background_pressure_rate * t);
+      cx.mats.m[m].background_pressure = Real(background_pressure_[m] + o_.background_pressure_rate * t);
   }
 
   // Body-force regions at time t, each scaled by its ramp factor.
@@ -124,7 +124,7 @@ class FluidStage {
  private:
   FluidOptions o_;
   FluidForceOptions fo_;
-  double background_pressure_ = 0;  // Pa, at t = 0
+  double background_pressure_[kMaxMaterials] = {};  // Pa, each material's at t = 0
   std::vector<SceneForceRegion> regions_;  // full body forces of the regions (cx.mats holds them ramped)
   BiCGStab<D, B> krylov_;
   DeviceArray<Vec<D>, B> visc_b_, visc_x_;  // implicit viscous step: right-hand side, solution

@@ -62,7 +62,10 @@ void read_solver(CaseReader& top, CaseDraft& d) {
   if (o.implicit_tolerance >= 1) r.fail("implicit_tolerance", "expected a relative residual in (0, 1)");
   const double p_b = r.non_negative("background_pressure", 0.0);
   for (auto& m : d.c.scene.materials) m.props.background_pressure = Real(p_b);
-  o.background_pressure_rate = r.number("background_pressure_rate", 0.0);
+  o.background_pressure_rate = r.non_negative("background_pressure_rate", 0.0);
+  if (o.background_pressure_rate > 0 && d.c.scene.open_boundary.axis >= 0)
+    r.fail("background_pressure_rate", "expected no [open_boundary]: its buffers hold absolute pressures, which a "
+                                       "rising background pressure would leave behind");
   r.finish();
 }
 

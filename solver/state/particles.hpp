@@ -133,7 +133,7 @@ class ParticleState {
   // the elastic stage's (solid/elastic_stage.hpp),
   DeviceArray<Vec<D>, B> x0, u;
   DeviceArray<Mat<D>, B> strain, stress;
-  DeviceArray<Real, B> shepard;  // the strain pass's correction, recomputed every step: not registered
+  DeviceArray<Real, B> shepard;  // the strain pass's correction (each step, or kept from the list build): not registered
   DeviceArray<Vec<D>, B> shepard_grad;
   DeviceArray<Mat<D>, B> kcorr;
   DeviceArray<std::int32_t, B> mirror;
