@@ -84,6 +84,7 @@ PlateDamage run_plate_inclusion(const Case& c, const std::string& model, const s
     }
     if (out.onset < 0 && worst >= 0 && d[worst] >= peak_damage(model)) {
       out.onset = ubar, out.onset_x = x0[2 * worst], out.onset_y = x0[2 * worst + 1];
+      out.onset_driving_force = engine->field("damage_driving_force")[std::size_t(worst)];
       const StepStats st = engine->stats();
       out.kinetic_over_elastic = st.elastic_energy > 0 ? st.kinetic_energy / st.elastic_energy : 0;
     }

@@ -21,6 +21,7 @@ struct PlateDamage {
   double onset_x = 0, onset_y = 0;  // reference position of the particle past its peak first (m)
   double complete = -1;     // imposed displacement (m) when a crack reaches both lateral edges; -1: none
   double kinetic_over_elastic = 0;  // at the onset
+  double onset_driving_force = 0;   // Y of the onset's particle then (Pa)
   double asymmetry = 0;     // sum |D(x, y) - D(-x, y)| / sum D at the end (0: symmetric)
   double dissipated = 0;    // energy dissipated by damage at the end (J per m of thickness)
   double elastic = 0;       // elastic energy at the end (J/m)
