@@ -128,7 +128,15 @@ TEST(DamageCase, TheDisplacementFormTakesRankineMohrCoulombWithAllModuli) {
             DamageDegrades::AllModuli);
 }
 
-TEST(DamageCase, WhatIsNotBuiltYetIsRefused) {
-  expect_refused(std::string("model = \"rankine_mohr_coulomb\"\n") + kPlate + "degraded = \"ghost\"",
-                 {"damage.degraded", "not built yet"});
+// Ghosts take their threshold; the displacement form refuses them as it refuses "deviatoric".
+TEST(DamageCase, GhostsTakeTheirThresholdInTheStressFormOnly) {
+  const std::string ghost = std::string("model = \"rankine_mohr_coulomb\"\n") + kPlate + "degraded = \"ghost\"\n";
+  const DamageOptions o = options_of(ghost + "ghost_threshold = 0.95");
+  EXPECT_EQ(o.damage_degrades, DamageDegrades::Ghost);
+  EXPECT_EQ(o.ghost_threshold, 0.95);
+  EXPECT_EQ(options_of(ghost).ghost_threshold, 0.99);
+  const std::string msg = error_of(replaced(replaced(with_damage(ghost), "[damage]", "[solid]\nformulation = \"displacement\"\n\n[damage]"),
+                                            "poisson_ratio = 0.3975", "poisson_ratio = 0.2"));
+  EXPECT_NE(msg.find("damage.degraded"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("\"ghost\""), std::string::npos) << msg;
 }

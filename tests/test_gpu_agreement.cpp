@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "engine/engine.hpp"
+#include "ghost_strip.hpp"
 #include "scene/case_file.hpp"
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
@@ -97,6 +98,19 @@ const std::vector<AgreementCase>& agreement_cases() {
       // velocity extrapolated from the fluid next to them.
       {"open_boundary", [] { return embedded("open_channel_2d"); }, 300,
        {{"time", 1e-9}, {"position", 1e-9}, {"velocity", 1e-7}, {"density", 1e-9}, {"pressure", 1e-6}}},
+      // PCW damage in the softening bar (Saint Venant-Kirchhoff, artificial viscosity), past the
+      // onset at the centre (step 504): the damage passes and their closed-form update.
+      {"damage_pcw", [] { return embedded("softening_bar_2d"); }, 600,
+       {{"time", 1e-9}, {"position", 1e-9}, {"velocity", 1e-6}, {"strain", 1e-6}, {"damage", 1e-6},
+        {"damage_driving_force", 1e-6}}},
+      // Rankine-Mohr-Coulomb with ghosts: the notched strip breaks (6 ghosts by 1.1 ms, each a list
+      // build of its own); which particle is a ghost must agree exactly.
+      {"damage_ghosts", [] {
+         Case c = load_case_text(test::ghost_strip_case(), "ghost_strip.toml");
+         build_particles(c);
+         return c;
+       }, 6500,
+       {{"time", 1e-9}, {"position", 1e-9}, {"velocity", 1e-5}, {"damage", 1e-6}, {"damage_ghost", 0}}},
   };
   return cases;
 }

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "neighbours/host_neighbours.hpp"
+#include "neighbours/neighbour_list.hpp"
 
 using namespace psph;
 
@@ -79,4 +80,40 @@ TEST(Neighbours, ShortPeriodicAxisIsRejected) {
   const Real lo[2] = {0, 0}, hi[2] = {1, Real(0.25)};
   const bool per[2] = {true, true};
   EXPECT_FALSE(CellGrid<2>::make(lo, hi, per, Real(0.1), g));
+}
+
+// The lists leave out the retired damage ghosts (core/damage_ghost.hpp): a retired ghost lists
+// no one and no list holds it; a pending ghost is still listed until it retires.
+TEST(Neighbours, RetiredGhostsAreInNoList) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  const int n = 800, capacity = 256;
+  std::vector<Vec<2>> pts(n);
+  for (auto& p : pts) p[0] = Real(u(rng)), p[1] = Real(u(rng));
+  const Real lo[2] = {0, 0}, hi[2] = {1, 1};
+  const bool per[2] = {false, false};
+  HostNeighbours<2> nb(pts, lo, hi, per, Real(0.08));
+  MaterialTable<2> mats;
+  mats.count = 1, mats.m[0].kind = MaterialKind::Elastic;
+  std::vector<std::uint8_t> material(n, 0), near_fluid(n, 1), ghost(n, 0);
+  for (int i = 0; i < n; i += 7) ghost[i] = kGhostRetired;
+  for (int i = 3; i < n; i += 11) ghost[i] = kGhostPending;
+  std::vector<int> index(std::size_t(capacity) * n), count(n), fluid_count(n);
+  const BuildNeighbourList<2> build{nb.view(), material.data(), mats, near_fluid.data(), nullptr, ghost.data(),
+                                    false, false, index.data(), count.data(), fluid_count.data(), capacity,
+                                    capacity, 1};
+  int pending_listed = 0;
+  for (int i = 0; i < n; ++i) {
+    build(i);
+    std::set<int> listed(index.begin() + std::size_t(i) * capacity, index.begin() + std::size_t(i) * capacity + count[i]);
+    std::set<int> expected;
+    if (ghost[i] != kGhostRetired)
+      nb.view().for_each(i, [&](int j, const Vec<2>&, Real) {
+        if (ghost[j] != kGhostRetired) expected.insert(j);
+      });
+    ASSERT_LE(count[i], capacity);
+    EXPECT_EQ(listed, expected) << "particle " << i;
+    for (int j : listed) pending_listed += ghost[j] == kGhostPending;
+  }
+  EXPECT_GT(pending_listed, 0);
 }

@@ -3,7 +3,8 @@
 // each damaging particle's new damage from its strain (the Green-Lagrange strain in large
 // strain), its driving force, and its stress with the degraded moduli in place of the intact one
 // (the Cauchy stress, and in large strain the Piola stress the force pass reads); in the
-// displacement form also the degraded moduli, which its pair forces read.
+// displacement form also the degraded moduli, which its pair forces read; with ghosts, which
+// particles become one (damage/ghosts.hpp).
 #include "core/material.hpp"
 #include "damage/damage_options.hpp"
 #include "damage/degraded_stress.hpp"
@@ -20,6 +21,7 @@ struct DamageLaw {
   unsigned materials = 0;  // bit k: material k damages
   RankineMohrCoulomb rmc;
   DamageDegrades degrades = DamageDegrades::Deviatoric;
+  Real ghost_threshold = 1;  // degraded = "ghost": the damage at which a particle becomes one
   ThermodynamicDamage thermo[kMaxMaterials];  // per material (PCW's Y_c0 follows each E0)
   PSPH_HD bool damages(int material) const { return materials >> material & 1u; }
 };
@@ -44,6 +46,7 @@ struct DamageUpdatePass {
       if (bulk) bulk[i] = k0, shear[i] = mu0;
       return;
     }
+    if (is_retired_ghost(s.ghost, i)) return;  // no neighbours: no strain, no stress, its damage kept
     const Mat<D> eps = s.strain[i];
     DamagedModuli c;
     if (law.rankine) {
@@ -52,6 +55,7 @@ struct DamageUpdatePass {
       driving_force[i] = target.combined;
       if (tensile) tensile[i] = target.tensile, compressive[i] = target.compressive;
       c = rankine_mohr_coulomb_moduli(law.degrades, k0, mu0, damage[i]);
+      if (s.ghost && is_damage_ghost(law.degrades, law.ghost_threshold, damage[i])) s.ghost[i] = kGhostPending;
     } else {
       const ThermodynamicDamage& m = law.thermo[mi];
       damage[i] = thermodynamic_damage_update(m, damage[i], eps, k0, mu0);

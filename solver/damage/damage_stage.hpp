@@ -7,13 +7,15 @@
 // parts of eq. 23), and in the displacement form (or with the pair_eos coupling) `damaged_bulk_modulus`
 // and `damaged_shear_modulus`, which its pair forces (and the solid's own pressure) read
 // (solid/elastic_force.hpp, solid/fluid_coupling.hpp); monitors: damaged
-// particles, total damage, energy dissipated by damage. All are registered fields: checkpoints and
-// reorderings carry them.
+// particles, total damage, energy dissipated by damage. With degraded = "ghost", the particles that
+// drop out of every interaction (damage/ghosts.hpp): field `damage_ghost`, monitor
+// `ghost_particles`. All are registered fields: checkpoints and reorderings carry them.
 #include <vector>
 
 #include "damage/damage_options.hpp"
 #include "damage/damage_parameters.hpp"
 #include "damage/damage_pass.hpp"
+#include "damage/ghosts.hpp"
 #include "solid/elastic_force.hpp"
 #include "stage/monitor_value.hpp"
 #include "stage/step_context.hpp"
@@ -33,6 +35,7 @@ class DamageStage {
     law_.materials = o.damage_materials;
     law_.rmc = rankine_mohr_coulomb_parameters(o);
     law_.degrades = o.damage_degrades;
+    law_.ghost_threshold = Real(o.ghost_threshold);
     for (int k = 0; k < cx.mats.count; ++k) law_.thermo[k] = thermodynamic_parameters(o, cx.mats.m[k]);
     const int n = cx.n();
     damage_.resize(n), driving_force_.resize(n);
@@ -46,6 +49,12 @@ class DamageStage {
       cx.s.add_field(tensile_, 1, "tensile_damage", "-", "D_t of eq. 20 where eq. 19 holds, at this state (Rankine-Mohr-Coulomb)");
       cx.s.add_field(compressive_, 1, "compressive_damage", "-",
                      "D_c of eq. 22 where eq. 21 holds, at this state (Rankine-Mohr-Coulomb)");
+    }
+    if (law_.rankine && law_.degrades == DamageDegrades::Ghost) {
+      cx.s.ghost.resize(n);
+      cx.s.ghost.zero();
+      cx.s.add_field(cx.s.ghost, 1, "damage_ghost", "-",
+                     "1: a damage ghost, out at the next list build; 2: out of every interaction; 0: neither");
     }
     if (!pair_moduli) return;
     bulk_.resize(n), shear_.resize(n);
@@ -68,8 +77,21 @@ class DamageStage {
                                             tensile_.size() ? compressive_.data() : nullptr});
   }
 
+  // Ghosts: a list build is due (a particle became a ghost in the last damage pass).
+  bool ghosts_pending(StepContext<D, B>& cx) const {
+    return cx.s.ghost.size() && cx.template max_of<int>(PendingGhostOf<D>{cx.view()}) > 0;
+  }
+  // Before each list build, and after the forces.
+  void retire_ghosts(StepContext<D, B>& cx) const {
+    if (cx.s.ghost.size()) B::for_each(cx.n(), RetireGhosts<D>{cx.view()});
+  }
+  void pin_ghosts(StepContext<D, B>& cx) const {
+    if (cx.s.ghost.size()) B::for_each(cx.n(), PinGhosts<D>{cx.view()});
+  }
+
   void monitors(StepContext<D, B>& cx, std::vector<MonitorValue>& out) const {
     if (!active_) return;
+    if (cx.s.ghost.size()) out.push_back({"ghost_particles", double(cx.template sum_of<Real>(GhostOf<D>{cx.view()}))});
     out.push_back({"damaged_particles", double(cx.template sum_of<Real>(DamagedOf{damage_.data()}))});
     out.push_back({"total_damage", double(cx.template sum_of<Real>(DamageOf{damage_.data()}))});
     if (!law_.rankine)

@@ -142,7 +142,7 @@ class Simulation final : public Engine {
 
   // Neighbours, density (or the EOS after continuity), forces at the new positions.
   void evaluate() {
-    if (cx_.neighbours.expired(cx_.s, cx_.grid)) rebuild();
+    if (cx_.neighbours.expired(cx_.s, cx_.grid) || damage_.ghosts_pending(cx_)) rebuild();
     elastic_.strain(cx_);  // before the fluid's sums, which read the solid's volumes
     damage_.update(cx_);   // the degraded stress, before the forces read it
     if (cx_.fluid) {
@@ -156,7 +156,7 @@ class Simulation final : public Engine {
   // Every force of a step (after the solids' strain): the pressure and velocity that solids and
   // walls present to the fluid, the interface's curvature, the fluid's forces, the solids' own
   // forces and contacts, the fluid's reaction on them; last the loads, so that an imposed
-  // velocity overrides every force, and the rigid bodies' sums.
+  // velocity overrides every force, the damage ghosts held at rest, and the rigid bodies' sums.
   void forces() {
     if (cx_.fluid) {
       coupling_.present_solids(cx_, damage_.moduli());
@@ -168,6 +168,7 @@ class Simulation final : public Engine {
     rigid_.contact(cx_);
     coupling_.fluid_on_solids(cx_, fluid_.force_options());
     loads_.apply(cx_);
+    damage_.pin_ghosts(cx_);
     rigid_.sum_loads(cx_);
   }
 
@@ -183,6 +184,7 @@ class Simulation final : public Engine {
   }
   // `every_particle`: lists for walls far from the fluid too (the walls' initial density).
   void rebuild(bool every_particle = false) {
+    damage_.retire_ghosts(cx_);  // the damage ghosts leave the lists (damage/ghosts.hpp)
     cx_.neighbours.build(cx_.s, cx_.grid, cx_.mats, cx_.list_needs(), every_particle);
     elastic_.lists_built(cx_);
   }

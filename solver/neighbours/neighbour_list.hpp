@@ -9,6 +9,7 @@
 // passes 2^31 near 50 million particles, below what one GPU holds.
 #include <cstdint>
 
+#include "core/damage_ghost.hpp"
 #include "core/material.hpp"
 #include "neighbours/cell_grid.hpp"
 
@@ -55,7 +56,7 @@ struct NeighbourList {
 // their fluid neighbours unless `walls_need_walls` (wall density by summation). Without fluids
 // (`no_fluid`: walls only clamp elastic solids) every wall lists all its neighbours, and so does a
 // clamp wall (`mirror` >= 0, solid/clamp.hpp) in any case: its partner takes a reaction through
-// its elastic neighbours.
+// its elastic neighbours. A retired damage ghost (core/damage_ghost.hpp) lists none and is listed by none.
 template <int D>
 struct BuildNeighbourList {
   NeighbourView<D> cells;
@@ -63,6 +64,7 @@ struct BuildNeighbourList {
   MaterialTable<D> mats;
   const std::uint8_t* near_fluid;  // per particle (neighbours/fluid_proximity.hpp)
   const std::int32_t* mirror;      // clamp partners (null without elastic solids and walls)
+  const std::uint8_t* ghost;       // damage ghosts (null without them)
   bool walls_need_walls;
   bool no_fluid;
   int* index;
@@ -74,9 +76,14 @@ struct BuildNeighbourList {
     int n = 0;
     int* row = index + ListOffset(i) * stride_i;
     auto add = [&](int j, const Vec<D>&, Real) {
+      if (is_retired_ghost(ghost, j)) return;
       if (n < capacity) row[ListOffset(n) * stride_k] = j;
       ++n;
     };
+    if (is_retired_ghost(ghost, i)) {
+      count[i] = fluid_count[i] = 0;
+      return;
+    }
     const bool full = no_fluid || mats.is_dynamic(material[i]) || (mirror && mirror[i] >= 0);
     if (full || near_fluid[i]) cells.for_each_fluid(i, add);
     fluid_count[i] = n;

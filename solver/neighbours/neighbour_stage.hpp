@@ -117,7 +117,7 @@ class NeighbourStage {
     for (;;) {
       if (index_.size() < std::size_t(capacity_) * n) index_.resize(std::size_t(capacity_) * n);
       B::for_each(n, BuildNeighbourList<D>{cells(grid, s.x.data()), s.material.data(), mats, s.near_fluid.data(),
-                                           needs.clamps ? s.mirror.data() : nullptr, needs.walls_need_walls,
+                                           needs.clamps ? s.mirror.data() : nullptr, s.ghost.data(), needs.walls_need_walls,
                                            !needs.fluid, index_.data(), count_.data(), fluid_count_.data(), capacity_,
                                            stride_i(), stride_k()});
       const int most = n ? B::template max_of<int>(n, ListCount<D>{count_.data()}) : 0;

@@ -6,6 +6,7 @@
 // pairs stay listed while strains stay below the lists' skin.)
 #include <cstdint>
 
+#include "core/damage_ghost.hpp"
 #include "core/material.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
@@ -53,6 +54,25 @@ struct RecordReferenceNeighbours {
         const int mj = s.material[j];
         if (!mats.is_fluid(mj) && !mats.is_rigid(mj) && n < capacity) ids[ListOffset(row) * capacity + n++] = s.id[j];
       });
+    count[row] = n;
+  }
+};
+
+// After each list build: the rows lose their retired damage ghosts (core/damage_ghost.hpp), the
+// rest in order, and a ghost's own row empties, so that a ghost leaves the solid for good.
+template <int D>
+struct PruneGhostReferences {
+  ParticleView<D> s;
+  std::int32_t* ids;
+  std::int32_t* count;
+  int capacity;
+  PSPH_HD void operator()(int i) const {
+    const int row = s.id[i];
+    std::int32_t* r = ids + ListOffset(row) * capacity;
+    int n = 0;
+    if (!is_retired_ghost(s.ghost, i))
+      for (int k = 0; k < count[row]; ++k)
+        if (!is_retired_ghost(s.ghost, s.index_of_id[r[k]])) r[n++] = r[k];
     count[row] = n;
   }
 };

@@ -129,19 +129,18 @@ void read_damage(CaseReader& top, CaseDraft& d) {
   for (const char* key : kPcwKeys)
     if (o.damage_model != DamageModel::Pcw && r.has(key)) r.fail(key, "expected model = \"pcw\"" + why, r.node(key));
   // The damage stage degrades the stress the stress form reads and the moduli the displacement
-  // form pairs; the ghosts' removal from every pass is not built yet.
+  // form pairs; ghosts leave every list (damage/ghosts.hpp).
   o.damage_materials = read_damaged_materials(r, d);
   if (rankine) read_rankine_mohr_coulomb(r, o);
   else read_thermodynamic(r, o);
-  if (o.damage_degrades == DamageDegrades::Ghost)
-    r.fail("degraded", "expected \"deviatoric\" or \"all_moduli\": ghosts (particles that leave every interaction) "
-                       "are not built yet", r.node("degraded"));
   // The displacement form's pairs stiffen across their axis by 5 mu / 3 - k (solid/elastic_force.hpp):
   // degrading mu alone turns that negative once D > 1 - 3 k0 / (5 mu0), and the solid blows up.
-  if (rankine && o.damage_degrades == DamageDegrades::Deviatoric &&
+  // Ghosts take the deviatoric law until they drop out.
+  if (rankine && o.damage_degrades != DamageDegrades::AllModuli &&
       d.c.scene.options.solid_formulation == SolidFormulation::Displacement)
     r.fail("degraded", "expected \"all_moduli\" with [solid] formulation = \"displacement\" (its central pairs go "
-                       "unstable when only the shear modulus is degraded; the stress form takes \"deviatoric\")",
+                       "unstable when only the shear modulus is degraded, as \"deviatoric\" and \"ghost\" do; the "
+                       "stress form takes them)",
            r.has("degraded") ? r.node("degraded") : r.node("model"));
   r.finish();
 }

@@ -60,17 +60,23 @@ class ElasticStage {
   }
 
   // After a list build (and reordering): at t = 0 (current = reference positions) the large-strain
-  // solid records its lists of t = 0; a small-strain solid without fluid keeps its corrections.
+  // solid records its lists of t = 0, and after every build drops the damage ghosts retired from the
+  // current lists; a small-strain solid without fluid keeps its corrections.
   void lists_built(StepContext<D, B>& cx) {
     if (!active_) return;
     corrections_kept_ = !large_strain() && !cx.fluid;
     if (corrections_kept_) B::for_each(cx.n(), SolidCorrectionPass<D>{cx.pairs(cx.reference_list())});
-    if (!large_strain() || reference_count_.size() != 0) return;
+    if (!large_strain()) return;
     const int n = cx.n();
-    reference_capacity_ = cx.neighbours.capacity();
-    reference_ids_.resize(std::size_t(reference_capacity_) * n), reference_count_.resize(n);
-    B::for_each(n, RecordReferenceNeighbours<D>{cx.list(), cx.view(), cx.mats, reference_ids_.data(),
-                                                reference_count_.data(), reference_capacity_});
+    if (reference_count_.size() == 0) {
+      reference_capacity_ = cx.neighbours.capacity();
+      reference_ids_.resize(std::size_t(reference_capacity_) * n), reference_count_.resize(n);
+      B::for_each(n, RecordReferenceNeighbours<D>{cx.list(), cx.view(), cx.mats, reference_ids_.data(),
+                                                  reference_count_.data(), reference_capacity_});
+    }
+    if (cx.s.ghost.size())
+      B::for_each(n, PruneGhostReferences<D>{cx.view(), reference_ids_.data(), reference_count_.data(),
+                                             reference_capacity_});
   }
 
   // Displacements and, where the step needs them, strain and stress (the fluid reads the solid's

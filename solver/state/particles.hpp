@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "backend/device_array.hpp"
+#include "core/damage_ghost.hpp"
 #include "core/vec.hpp"
 #include "state/fields.hpp"
 
@@ -54,6 +55,8 @@ struct ParticleView {
   Mat<D>* defgrad = nullptr;  // deformation gradient F
   // Loaded elastic particles only (null otherwise): solid/solid_load.hpp.
   std::int32_t* load_mask = nullptr;  // the [[solid_load]]s a particle belongs to, bit g for load g
+  // Damage with ghosts only (null otherwise): damage/damage_stage.hpp.
+  std::uint8_t* ghost = nullptr;  // kGhostPending, kGhostRetired (core/damage_ghost.hpp), or 0
 };
 
 template <class T, class B>
@@ -105,6 +108,7 @@ class ParticleState {
     v.mirror = mirror.data(), v.index_of_id = index_of_id.data();
     v.visc_scale = visc_scale.data(), v.fluid_contact = fluid_contact.data(), v.p_ambient = p_ambient.data();
     v.body = body.data(), v.piola = piola.data(), v.defgrad = defgrad.data(), v.load_mask = load_mask.data();
+    v.ghost = ghost.data();
     return v;
   }
 
@@ -143,6 +147,7 @@ class ParticleState {
   DeviceArray<std::int32_t, B> load_mask;    // the solid loads' (solid/solid_load_stage.hpp)
   DeviceArray<Real, B> visc_scale, p_ambient;  // the fluid-solid coupling's (solid/coupling_stage.hpp)
   DeviceArray<std::uint8_t, B> fluid_contact;
+  DeviceArray<std::uint8_t, B> ghost;        // the damage stage's, with ghosts (damage/ghosts.hpp)
 
  private:
   template <class T>

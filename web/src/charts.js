@@ -9,7 +9,7 @@ const GROUPS = [
   { title: 'Saturations', match: (c) => /^saturation_/.test(c) },
   { title: 'Pressures (Pa)', match: (c) => /^(capillary_pressure|pressure_liquid|pressure_gas)$/.test(c) },
   { title: 'Percolation time (s)', match: (c) => c === 'percolation_time' },
-  { title: 'Damage', match: (c) => /damage/.test(c) },
+  { title: 'Damage', match: (c) => /damage/.test(c) || c === 'ghost_particles' },
   { title: 'Time step (s)', match: (c) => c === 'dt' },
 ];
 const COLOURS = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f0e', '#9467bd', '#8c564b'];
