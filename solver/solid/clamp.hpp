@@ -2,10 +2,11 @@
 // Clamps of elastic solids: a wall particle w with a mirror partner p (engine/clamp_partners.hpp)
 // presents the partner's displacement mirrored through the clamp surface, u_w = 2 u_wall - u_p
 // (the odd extension, as the no-slip mirror of Adami, Hu & Adams 2012 eq. 23 is for velocities);
-// walls without a partner present their own displacement. The stress form's elastic energy is the
-// solid's own, sum_s V_s sigma_s : eps_s / 2, with the walls' u_w inside eps_s; as u_w follows u_p,
-// the partner also feels -dE/du_p through u_w (clamp_reaction), which keeps
-// the forces the gradient of that energy: without this chain rule a clamped rod went unstable.
+// walls without a partner, or whose partner is a damage ghost, present their own displacement.
+// The stress form's elastic energy is the solid's own, sum_s V_s sigma_s : eps_s / 2, with the
+// walls' u_w inside eps_s; as u_w follows u_p, the partner also feels -dE/du_p through u_w
+// (clamp_reaction), which keeps the forces the gradient of that energy: without this chain rule a
+// clamped rod went unstable.
 #include "core/material.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
@@ -20,7 +21,9 @@ struct ClampDisplacementPass {
   MaterialTable<D> mats;
   PSPH_HD void operator()(int i) const {
     if (mats.is_dynamic(s.material[i]) || s.mirror[i] < 0) return;
-    s.u[i] = s.u[i] * Real(2) - s.u[s.index_of_id[s.mirror[i]]];
+    const int p = s.index_of_id[s.mirror[i]];
+    if (is_retired_ghost(s.ghost, p)) return;  // a damage ghost's wall clamps nothing (damage/ghosts.hpp)
+    s.u[i] = s.u[i] * Real(2) - s.u[p];
   }
 };
 
