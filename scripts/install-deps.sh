@@ -4,12 +4,12 @@
 #   scripts/install-deps.sh            solver, tests, VTK output (ParaView 5.11), the dashboard
 #                                      (cpp-httplib; Chromium for its browser tests; the front-end's
 #                                      npm packages install at build time with the machine's npm)
-#   scripts/install-deps.sh --minimal  solver and tests only (no ParaView)
+#   scripts/install-deps.sh --minimal  solver and tests only (no ParaView; libtiff for TIFF images)
 set -euo pipefail
 
 pkgs=(build-essential cmake ninja-build libomp-dev
       libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
-      libgtest-dev libbenchmark-dev)
+      libgtest-dev libbenchmark-dev libtiff-dev)
 # ParaView: its CMake package needs its Python modules and the -dev packages its exported
 # targets name (MPI, GLEW, NetCDF, HDF5); Xvfb renders headless, ffmpeg assembles MP4s.
 [[ "${1:-}" == "--minimal" ]] || pkgs+=(paraview-dev python3-paraview libopenmpi-dev libglew-dev libnetcdf-dev

@@ -5,6 +5,7 @@
 #include "app/run_driver.hpp"
 #include "catalyst/figures.hpp"
 #include "catalyst/insitu_session.hpp"
+#include "image/image_report.hpp"
 #include "scene/case_file.hpp"
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
@@ -45,6 +46,7 @@ int cmd_check(const std::string& path) {
   std::cout << path << ": case " << c.name << " is valid: " << c.scene.count() << " particles (" << fluid
             << " fluid), " << c.scene.dimension << "D, support radius " << c.scene.options.support_radius
             << " m, spacing " << c.scene.options.spacing << " m, end time " << c.end_time << " s\n";
+  for (const auto& image : c.images) std::cout << "image " << image_report_text(image);
   return 0;
 }
 

@@ -1,9 +1,10 @@
-// poresph command line: run, check, validate, bench, demo, figures, serve.
+// poresph command line: run, check, validate, bench, demo, figures, serve, image.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <vector>
 
 #include "app/bench_cases.hpp"
+#include "app/cmd_image.hpp"
 #include "app/commands.hpp"
 #include "app/last_resort.hpp"
 
@@ -73,6 +74,9 @@ int main(int argc, char** argv) {
   demo->add_option("--serve", ro.serve, "serve the browser dashboard on this port (0: any free port)")->check(CLI::Range(0, 65535));
   demo->add_option("--bind", ro.bind, "the dashboard's address (default 127.0.0.1)");
 
+  psph::ImageInfoOptions image_opt;
+  auto* image = psph::add_image_command(app, image_opt);
+
   CLI11_PARSE(app, argc, argv);
   const auto dispatch = [&]() -> int {
     if (*run) return psph::cmd_run(case_path, ro);
@@ -87,6 +91,7 @@ int main(int argc, char** argv) {
     }
     if (*bench) return psph::cmd_bench(bench_names, json, vbackend, quick, accuracy, stability);
     if (*demo) return psph::cmd_demo(ro);
+    if (*image) return psph::cmd_image(*image, image_opt);
     return 1;
   };
   try {

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "app/interrupts.hpp"
+#include "image/image_report.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/durable_file.hpp"
 
@@ -113,6 +114,10 @@ void RunDriver::plan_outputs() {
        << c_.scene.dimension << "D, backend " << engine_->backend() << " (" << engine_->device() << "), "
        << precision_name() << " precision, end time " << c_.end_time << " s";
   log(head.str());
+  for (const auto& image : c_.images) {
+    const std::string text = image_report_text(image);
+    log("image " + text.substr(0, text.size() - 1));  // without its last newline
+  }
   for (const auto& note : restart_notes_) log(note);
   if (!restart_file_.empty())
     log("restarted from " + restart_file_ + " at t = " + std::to_string(engine_->time()) + " s, step " +
@@ -346,6 +351,7 @@ nlohmann::json RunDriver::summary(double wall) const {
                       {"end_time", c_.end_time},
                       {"wall_seconds", wall},
                       {"particle_steps_per_second", steps * engine_->particles() / std::max(wall, 1e-9)}};
+  if (!c_.images.empty()) j["images"] = c_.images;
   if (two_phase_) {
     const TwoPhaseSample& s = two_phase_->last();
     const double tp = two_phase_->percolation_time();

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include <toml++/toml.h>
 
 #include "monitors/monitor_region.hpp"
@@ -48,6 +50,7 @@ struct Case {
   MonitorRegion monitor_region;
   VisualisationOptions visualisation;
   std::string source_text;  // the resolved case, as TOML
+  std::vector<nlohmann::json> images;  // each image geometry's report (image/image_report.hpp)
 };
 
 // Parses and checks a case. `file` is used in messages only.

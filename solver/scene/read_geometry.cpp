@@ -6,6 +6,9 @@
 #include "scene/case_tables.hpp"
 
 namespace psph {
+
+void read_image_geometry(CaseReader& r, CaseDraft& d);
+
 namespace {
 
 // The packing tries each grain against those placed, and each lattice site in the box against
@@ -128,7 +131,8 @@ void read_geometry(CaseReader& top, CaseDraft& d) {
   if (!arr || arr->empty() || !arr->is_array_of_tables()) top.fail("geometry", "expected an array of tables [[geometry]]", g);
   top.each_table("geometry", arr->size(), "shapes", [&](CaseReader& r) {
     GeometryShape s;
-    const std::string shape = r.choice("shape", {"box", "sphere", "lens", "grain_pack"});
+    const std::string shape = r.choice("shape", {"box", "sphere", "lens", "grain_pack", "image"});
+    if (shape == "image") return read_image_geometry(r, d);  // a shape per material (scene/read_image.cpp)
     s.shape = read_shape(r, d, shape);
     require_overlap(r, d.c.scene, s.shape->bounds(), shape == "box" ? "upper" : shape == "grain_pack" ? "lower" : "center");
     read_filling(r, d, s, shape == "grain_pack");
