@@ -18,7 +18,11 @@ using namespace psph;
 
 namespace {
 
-const std::string kRocks = PORESPH_ROCKS_DIR;
+const std::string kRocks = PORESPH_ROCKS_DIR;  // empty where the build found none
+
+// The tests of the real rocks are skipped (and reported so) where there are none.
+#define REQUIRE_ROCKS() \
+  if (kRocks.empty()) GTEST_SKIP() << "no segmented rock images (../shared/data/rocks) on this machine"
 
 // A 20^3 crop of the Berea image (porosity 0.21 there) at 2.5 um voxels, one particle per voxel; its file is given
 // relative to the case file, which is read as if it were in the rocks' folder.
@@ -69,6 +73,7 @@ std::vector<std::int64_t> berea() {
 }  // namespace
 
 TEST(ImageCase, EachParticleTakesTheMaterialOfItsVoxel) {
+  REQUIRE_ROCKS();
   const Case c = built(kCase);
   const auto labels = berea();
   ASSERT_EQ(c.scene.count(), 8000);
@@ -88,6 +93,7 @@ TEST(ImageCase, EachParticleTakesTheMaterialOfItsVoxel) {
 // Coarsened 2 x 2 x 2, the largest pore kept, the others made rock: the fluid particles are the
 // largest component's voxels.
 TEST(ImageCase, TheLargestPoreIsKeptAndTheOthersFilled) {
+  REQUIRE_ROCKS();
   const std::string text = test::replaced(test::replaced(kCase, "crop = { lower = [40, 40, 30], upper = [60, 60, 50] }",
                                                          "crop = { lower = [0, 0, 0], upper = [40, 40, 40] }\ncoarsen = 2\n"
                                                          "pores = \"largest\"\nother_pores = \"rock\""),
@@ -109,6 +115,7 @@ TEST(ImageCase, TheLargestPoreIsKeptAndTheOthersFilled) {
 
 // A 2D case on slice 5 of the crop (porosity 0.31): the slice's voxels, x and y.
 TEST(ImageCase, A2DCaseTakesOneSlice) {
+  REQUIRE_ROCKS();
   std::string text = test::replaced(test::replaced(kCase, "dimension = 3", "dimension = 2"), "lower = [0.0, 0.0, 0.0]",
                                     "lower = [0.0, 0.0]");
   text = test::replaced(test::replaced(text, "upper = [5.0e-5, 5.0e-5, 5.0e-5]", "upper = [5.0e-5, 5.0e-5]"),
@@ -128,6 +135,7 @@ TEST(ImageCase, A2DCaseTakesOneSlice) {
 }
 
 TEST(ImageCase, BadImagesAreRefusedNamingTheKey) {
+  REQUIRE_ROCKS();
   auto refused = [&](const std::string& from, const std::string& to, const std::vector<std::string>& says) {
     std::string msg;
     try {
