@@ -1,8 +1,5 @@
 #include "catalyst/figures.hpp"
 
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -12,28 +9,11 @@
 
 #include "catalyst/headless_display.hpp"
 #include "catalyst/pipeline_scripts.hpp"
+#include "catalyst/run_program.hpp"
 
 namespace fs = std::filesystem;
 
 namespace psph {
-namespace {
-
-// Runs argv[0] (searched in PATH) and waits; returns its exit status, 127 when it cannot start.
-int run_program(const std::vector<std::string>& args) {
-  std::vector<char*> argv;
-  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-  argv.push_back(nullptr);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    execvp(argv[0], argv.data());
-    _exit(127);
-  }
-  int status = 0;
-  if (pid < 0 || waitpid(pid, &status, 0) < 0) return 127;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-}
-
-}  // namespace
 
 int render_figures(const std::string& run_dir, const std::vector<std::string>& requested, std::ostream& log) {
   const fs::path run = fs::absolute(run_dir).lexically_normal();

@@ -11,10 +11,11 @@ pkgs=(build-essential cmake ninja-build libomp-dev
       libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
       libgtest-dev libbenchmark-dev libtiff-dev)
 # ParaView: its CMake package needs its Python modules and the -dev packages its exported
-# targets name (MPI, GLEW, NetCDF, HDF5); Xvfb renders headless, ffmpeg assembles MP4s.
+# targets name (MPI, GLEW, NetCDF, HDF5); Xvfb renders headless, ffmpeg assembles MP4s, matplotlib
+# draws `poresph report`'s plots.
 [[ "${1:-}" == "--minimal" ]] || pkgs+=(paraview-dev python3-paraview libopenmpi-dev libglew-dev libnetcdf-dev
                                         libhdf5-dev libx11-dev libfreetype-dev libboost-dev libxml2-dev xvfb ffmpeg
-                                        libcpp-httplib-dev chromium)
+                                        libcpp-httplib-dev chromium python3-matplotlib)
 
 missing=()
 for p in "${pkgs[@]}"; do

@@ -61,6 +61,8 @@ std::unique_ptr<VolumeSource> open_described(const ImageInfoOptions& o) {
   return open_volume(o.file, o.format, raw_given ? &raw : nullptr, o.first_page);
 }
 
+}  // namespace
+
 int image_info(const ImageInfoOptions& o) {
   if (o.coarsen.size() == 2) throw ImageError(o.file, "--coarsen: expected one factor or three");
   auto src = open_described(o);
@@ -75,6 +77,8 @@ int image_info(const ImageInfoOptions& o) {
   std::cout << (o.json ? report.dump(2) + "\n" : image_report_text(report));
   return 0;
 }
+
+namespace {
 
 // One section: its labels found first, then each label its own phase and colour.
 int image_slice(const ImageInfoOptions& o) {
@@ -135,11 +139,13 @@ CLI::App* add_image_command(CLI::App& app, ImageInfoOptions& o) {
   slice->add_option("--index", o.index, "the section's voxel along that axis (default 0)");
   slice->add_option("--out", o.out, "the PNG to write (default slice.png)");
   slice->add_option("--scale", o.scale, "pixels per voxel (default 1)")->check(CLI::Range(1, 64));
+  add_generate_command(image, o);
   return image;
 }
 
 int cmd_image(const CLI::App& image, const ImageInfoOptions& o) {
   try {
+    if (image.got_subcommand("generate")) return image_generate(o);
     return image.got_subcommand("slice") ? image_slice(o) : image_info(o);
   } catch (const ImageError& e) {
     std::cerr << "poresph: " << e.what() << "\n";

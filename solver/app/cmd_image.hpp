@@ -1,9 +1,11 @@
 #pragma once
 // `poresph image info FILE`: a segmented image's size, labels, porosity and pore components
 // (image/image_report.hpp), without building particles; `poresph image slice FILE`: a PNG of one
-// section, a colour per label (the legend printed).
+// section, a colour per label (the legend printed); `poresph image generate claystone`: the seeded
+// synthetic claystone sample as a NumPy file (app/cmd_image_generate.cpp).
 #include <CLI/CLI.hpp>
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -22,10 +24,19 @@ struct ImageInfoOptions {
   std::string axis = "z", out = "slice.png";
   long index = 0;
   int scale = 1;  // pixels per voxel
+  // generate (image/claystone_sample.hpp)
+  long size = 50;
+  std::uint64_t seed = 1;
+  double porosity = 0.128, grains = 0.08;
+  std::string variant = "one_pore";
 };
 
 // The `image` command and its `info` and `slice` subcommands on `app`.
 CLI::App* add_image_command(CLI::App& app, ImageInfoOptions& o);
+// `image generate claystone` on `image`, and what it runs (writes the file, prints its report).
+void add_generate_command(CLI::App* image, ImageInfoOptions& o);
+int image_generate(const ImageInfoOptions& o);
+int image_info(const ImageInfoOptions& o);
 // Exit 0, or 2 when the image cannot be read as described (the message names the file).
 int cmd_image(const CLI::App& image, const ImageInfoOptions& o);
 

@@ -26,6 +26,10 @@ int cmd_figures(const std::string& run_dir, const std::vector<std::string>& pipe
 // Serves the dashboard of a run directory (finished, or still running in another process) until
 // interrupted.
 int cmd_serve(const std::string& run_dir, int port, const std::string& bind);
+// Plots of one run's monitors, or of several together (`out` then required; default RUNDIR/report):
+// saturations, phase and capillary pressures, Pc against S_w, the percolation times. Exit 2 on a
+// folder that is no run directory, 4 when the plots fail (matplotlib missing).
+int cmd_report(const std::vector<std::string>& run_dirs, const std::string& out);
 int cmd_validate(const std::vector<std::string>& names, bool full, bool json, const std::string& backend);
 // One line per validation case: its name, a tab, its description (the CTest validation tests are
 // generated from it: tests/list_validations.cmake).

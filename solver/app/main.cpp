@@ -1,4 +1,4 @@
-// poresph command line: run, check, validate, bench, demo, figures, serve, image.
+// poresph command line: run, check, validate, bench, demo, figures, report, serve, image.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <vector>
@@ -39,6 +39,12 @@ int main(int argc, char** argv) {
   auto* figures = app.add_subcommand("figures", "re-render a run's figure sequences from its extracts (pvbatch), MP4 with ffmpeg");
   figures->add_option("rundir", run_dir, "run directory")->required();
   figures->add_option("--pipeline", fig_pipelines, "pipelines to render (default: the run's own); repeatable");
+
+  std::vector<std::string> report_dirs;
+  std::string report_out;
+  auto* report = app.add_subcommand("report", "PNG plots of a run's monitors (saturations, pressures, Pc-S), or of several runs");
+  report->add_option("rundirs", report_dirs, "run directories (several: drawn together)")->required();
+  report->add_option("--out", report_out, "folder for the plots (default RUNDIR/report; required for several runs)");
 
   auto* check = app.add_subcommand("check", "validate a case file, run nothing");
   check->add_option("case", case_path, "case file (TOML)")->required();
@@ -83,6 +89,7 @@ int main(int argc, char** argv) {
     if (*check) return psph::cmd_check(case_path);
     if (*serve) return psph::cmd_serve(run_dir, serve_port, serve_bind);
     if (*figures) return psph::cmd_figures(run_dir, fig_pipelines);
+    if (*report) return psph::cmd_report(report_dirs, report_out);
     if (*validate && validate_list) return psph::cmd_validate_list();
     if (*validate) return psph::cmd_validate(names, full, json, vbackend);
     if (*bench && bench_list) {

@@ -53,8 +53,12 @@ Case parse_case(const toml::table& tbl, const std::string& file) {
   read_geometry(top, d);
   top.finish();
   cross_check(d);
+  // The resolved case names each image by the path it was found at.
+  toml::table resolved = tbl;
+  for (const auto& [index, path] : d.image_files)
+    resolved["geometry"].as_array()->at(index).as_table()->insert_or_assign("file", path);
   std::ostringstream os;
-  os << tbl;
+  os << resolved;
   c.source_text = os.str();
   return c;
 }

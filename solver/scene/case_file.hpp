@@ -25,6 +25,7 @@ struct CaseError : std::runtime_error {
 
 // One [[geometry]] entry: a shape (scene/shape.hpp) filled with a material, or "empty".
 struct GeometryShape {
+  std::string name;  // for messages: "geometry[2]", or which part of an image
   std::shared_ptr<const Shape> shape;
   int material = -1;  // -1: "empty" (removes particles)
   std::array<double, 3> velocity{0, 0, 0};

@@ -23,6 +23,7 @@ struct CaseDraft {
   std::map<std::string, double> poisson_ratio;   // per elastic material (checked against the formulation)
   bool has_liquid = false, has_gas = false, has_elastic = false, has_rigid = false, has_walls = false;
   std::map<std::string, std::string> given;      // dotted key -> " (line N)", every key the file sets
+  std::vector<std::pair<std::size_t, std::string>> image_files;  // [[geometry]] index -> the image found (absolute)
 
   bool has_fluid() const { return has_liquid || has_gas; }
   int dimension() const { return c.scene.dimension; }

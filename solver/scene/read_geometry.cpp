@@ -7,7 +7,7 @@
 
 namespace psph {
 
-void read_image_geometry(CaseReader& r, CaseDraft& d);
+void read_image_geometry(CaseReader& r, CaseDraft& d, std::size_t index);
 
 namespace {
 
@@ -129,10 +129,12 @@ void read_geometry(CaseReader& top, CaseDraft& d) {
   if (!g) top.fail("geometry", "missing required array of tables [[geometry]]");
   const toml::array* arr = g->as_array();
   if (!arr || arr->empty() || !arr->is_array_of_tables()) top.fail("geometry", "expected an array of tables [[geometry]]", g);
+  std::size_t index = 0;
   top.each_table("geometry", arr->size(), "shapes", [&](CaseReader& r) {
     GeometryShape s;
+    s.name = "geometry[" + std::to_string(index++) + "]";
     const std::string shape = r.choice("shape", {"box", "sphere", "lens", "grain_pack", "image"});
-    if (shape == "image") return read_image_geometry(r, d);  // a shape per material (scene/read_image.cpp)
+    if (shape == "image") return read_image_geometry(r, d, index - 1);  // a shape per material (scene/read_image.cpp)
     s.shape = read_shape(r, d, shape);
     require_overlap(r, d.c.scene, s.shape->bounds(), shape == "box" ? "upper" : shape == "grain_pack" ? "lower" : "center");
     read_filling(r, d, s, shape == "grain_pack");

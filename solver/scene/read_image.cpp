@@ -8,10 +8,12 @@
 #include <limits>
 
 #include "image/image_error.hpp"
+#include "image/deep_voxels.hpp"
 #include "image/image_report.hpp"
 #include "image/pore_components.hpp"
 #include "image/volume_source.hpp"
 #include "scene/case_tables.hpp"
+#include "scene/image_path.hpp"
 #include "scene/image_shape.hpp"
 
 namespace psph {
@@ -22,8 +24,15 @@ constexpr double kMaxCoarseVoxels = 2147483647.0;  // the components' labels are
 // The volume as the file is, with the raw keys checked against the format.
 std::unique_ptr<VolumeSource> open_image(CaseReader& r, const CaseDraft& d, std::string& format, std::string& file) {
   file = r.string("file");
-  namespace fs = std::filesystem;
-  if (fs::path(file).is_relative()) file = (fs::path(d.file).parent_path() / file).lexically_normal().string();
+  std::vector<std::string> tried;
+  const std::string found = find_image_file(file, d.file, tried);
+  if (found.empty()) {
+    std::string list;
+    for (const std::string& t : tried) list += (list.empty() ? "" : ", ") + t;
+    r.fail("file", "expected an image file: \"" + shown(file) + "\" is at none of " + list +
+                       " (a relative path: next to the case file, then in PORESPH_IMAGE_PATH's folders)");
+  }
+  file = found;
   format = r.choice("format", {"auto", "raw", "tiff", "npy"}, "auto");
   if (format == "auto") format = format_of(file);
   for (const char* key : {"dimensions", "voxel_type", "byte_order", "header_bytes", "order"})
@@ -92,9 +101,6 @@ Phases read_labels(CaseReader& r, const CaseDraft& d, PhaseSpec& spec) {
     if (*name != "empty") {
       if (!d.mat_index.count(*name)) r.fail(where, "expected \"empty\" or the name of a table under [materials], got \"" + shown(*name) + "\"", v);
       mat = d.mat_index.at(*name);
-      const MaterialKind kind = d.c.scene.materials[std::size_t(mat)].props.kind;
-      if (kind == MaterialKind::Rigid)
-        r.fail(where, "expected a fluid, elastic or wall material: rigid inclusions from an image are not built yet", v);
     }
     const auto it = std::find(ph.material.begin(), ph.material.end(), mat);
     lr.phase = int(it - ph.material.begin());
@@ -146,6 +152,15 @@ void read_extent(CaseReader& r, const CaseDraft& d, const VolumeSource& src, Pha
   }
 }
 
+// The phase of material `mat` (-1: "empty"), added when the labels named none.
+std::uint8_t phase_of(CaseReader& r, Phases& ph, int mat, const char* key) {
+  auto it = std::find(ph.material.begin(), ph.material.end(), mat);
+  if (it != ph.material.end()) return std::uint8_t(it - ph.material.begin());
+  if (ph.material.size() >= 32) r.fail(key, "expected at most 32 phases in an image");
+  ph.material.push_back(mat);
+  return std::uint8_t(ph.material.size() - 1);
+}
+
 // pores = "all" | "largest" | "percolating" (along percolation_axis) | a component's index; the
 // others keep their material, or take other_pores.
 void select_pores(CaseReader& r, const CaseDraft& d, ImageGrid& g, Phases& ph, const PoreComponents& c) {
@@ -170,14 +185,7 @@ void select_pores(CaseReader& r, const CaseDraft& d, ImageGrid& g, Phases& ph, c
   if (other == "keep") return;
   if (!d.mat_index.count(other) && other != "empty")
     r.fail("other_pores", "expected \"keep\", \"empty\" or the name of a table under [materials], got \"" + shown(other) + "\"");
-  const int mat = other == "empty" ? -1 : d.mat_index.at(other);
-  auto it = std::find(ph.material.begin(), ph.material.end(), mat);
-  if (it == ph.material.end()) {
-    if (ph.material.size() >= 32) r.fail("other_pores", "expected at most 32 phases in an image");
-    ph.material.push_back(mat);
-    it = ph.material.end() - 1;
-  }
-  const std::uint8_t to = std::uint8_t(it - ph.material.begin());
+  const std::uint8_t to = phase_of(r, ph, other == "empty" ? -1 : d.mat_index.at(other), "other_pores");
   for (std::size_t i = 0; i < c.label.size(); ++i)
     if (c.label[i] >= 0 && !keep[std::size_t(c.label[i])]) g.volume.phase[i] = to;
 }
@@ -216,11 +224,84 @@ void place(CaseReader& r, const CaseDraft& d, ImageGrid& g, const PhaseSpec& spe
   }
 }
 
+// wall_depth (m): a wall material's voxels farther than this from another material's voxel (or
+// the image's faces) hold no particle: a rigid wall acts only within a support radius.
+void trim_walls(CaseReader& r, const CaseDraft& d, ImageGrid& g, Phases& ph) {
+  if (!r.has("wall_depth")) return;
+  const double depth = r.positive("wall_depth");
+  if (depth < d.c.scene.options.support_radius)
+    r.fail("wall_depth", "expected at least the support radius (" + CaseReader::fmt(d.c.scene.options.support_radius) +
+                             " m): the fluid next to a wall sums its particles that far");
+  unsigned walls = 0;
+  for (std::size_t p = 0; p < ph.material.size(); ++p)
+    if (ph.material[p] >= 0 && d.c.scene.materials[std::size_t(ph.material[p])].props.kind == MaterialKind::Wall)
+      walls |= 1u << p;
+  std::array<long, 3> reach{0, 0, 0};
+  for (int k = 0; k < d.dimension(); ++k) reach[std::size_t(k)] = long(std::ceil(depth / g.voxel[std::size_t(k)] - 1e-9));
+  replace_deep_voxels(g.volume, walls, reach, d.dimension(), phase_of(r, ph, -1, "wall_depth"));
+}
+
+bool is_rigid(const CaseDraft& d, int mat) {
+  return mat >= 0 && d.c.scene.materials[std::size_t(mat)].props.kind == MaterialKind::Rigid;
+}
+
+// Each face-connected inclusion of a rigid material's voxels is one rigid body (a shape of its
+// own); inclusions of fewer than inclusion_min_voxels coarse voxels take the material
+// small_inclusions instead (a body of a particle or two has no inertia to turn with).
+void add_inclusions(CaseReader& r, CaseDraft& d, const std::shared_ptr<ImageGrid>& g, Phases& ph, const std::string& file,
+                    const std::string& name) {
+  unsigned rigid = 0;
+  for (std::size_t p = 0; p < ph.material.size(); ++p)
+    if (is_rigid(d, ph.material[p])) rigid |= 1u << p;
+  for (const char* key : {"inclusion_min_voxels", "small_inclusions"})
+    if (!rigid && r.has(key)) r.fail(key, "expected a label mapped to a rigid material for it to apply to");
+  if (!rigid) return;
+  const long min_voxels = r.positive_integer("inclusion_min_voxels", 1);
+  std::uint8_t small = 0;
+  if (min_voxels > 1 || r.has("small_inclusions")) {
+    const std::string m = r.string("small_inclusions");  // required with a minimum
+    if (m != "empty" && (!d.mat_index.count(m) || is_rigid(d, d.mat_index.at(m))))
+      r.fail("small_inclusions", "expected \"empty\" or a material that is not rigid, got \"" + shown(m) + "\"");
+    small = phase_of(r, ph, m == "empty" ? -1 : d.mat_index.at(m), "small_inclusions");
+  }
+  g->inclusion.assign(std::size_t(g->volume.voxels()), -1);
+  for (std::size_t p = 0; p < ph.material.size(); ++p) {
+    if (!(rigid >> p & 1u)) continue;
+    const PoreComponents c = pore_components(g->volume, 1u << p, 6, file);
+    std::vector<std::int32_t> body(c.components.size(), -1);
+    std::vector<std::array<long, 3>> lo(c.components.size(), g->volume.size), hi(c.components.size(), {0, 0, 0});
+    for (std::size_t k = 0; k < c.components.size(); ++k)
+      if (c.components[k].voxels >= min_voxels) body[k] = std::int32_t(d.c.geometry.size() + k);
+    const auto& n = g->volume.size;
+    for (long i = 0; i < g->volume.voxels(); ++i) {
+      const std::int32_t l = c.label[std::size_t(i)];
+      if (l < 0) continue;
+      if (body[std::size_t(l)] < 0) {
+        g->volume.phase[std::size_t(i)] = small;
+        continue;
+      }
+      g->inclusion[std::size_t(i)] = body[std::size_t(l)];
+      const std::array<long, 3> q{i % n[0], i / n[0] % n[1], i / (n[0] * n[1])};
+      for (int a = 0; a < 3; ++a) lo[std::size_t(l)][a] = std::min(lo[std::size_t(l)][a], q[a]), hi[std::size_t(l)][a] = std::max(hi[std::size_t(l)][a], q[a] + 1);
+    }
+    for (std::size_t k = 0; k < c.components.size(); ++k) {
+      if (body[k] < 0) continue;
+      GeometryShape s;
+      s.name = name + " (inclusion " + std::to_string(k) + " of \"" + d.c.scene.materials[std::size_t(ph.material[p])].name +
+               "\", " + std::to_string(c.components[k].voxels) + " voxels)";
+      s.shape = make_image_inclusion(g, body[k], lo[k], hi[k]);
+      s.material = ph.material[p];
+      d.c.geometry.push_back(s);
+    }
+  }
+}
+
 }  // namespace
 
-void read_image_geometry(CaseReader& r, CaseDraft& d) {
+void read_image_geometry(CaseReader& r, CaseDraft& d, std::size_t index) {
   std::string format, file;
   auto src = open_image(r, d, format, file);
+  d.image_files.emplace_back(index, file);
   PhaseSpec spec;
   Phases ph = read_labels(r, d, spec);
   auto g = std::make_shared<ImageGrid>();
@@ -244,8 +325,13 @@ void read_image_geometry(CaseReader& r, CaseDraft& d) {
   for (const char* key : {"pores", "percolation_axis", "other_pores"})
     if (!ph.pore && r.has(key)) r.fail(key, "expected a label mapped to a fluid (the pore space) for it to apply to");
   place(r, d, *g, spec);
+  trim_walls(r, d, *g, ph);
+  const std::string name = "geometry[" + std::to_string(index) + "]";
+  add_inclusions(r, d, g, ph, file, name);
   for (std::size_t p = 0; p < ph.material.size(); ++p) {
+    if (is_rigid(d, ph.material[p])) continue;
     GeometryShape s;
+    s.name = name;
     s.shape = make_image_phases(g, 1u << p);
     s.material = ph.material[p];
     d.c.geometry.push_back(s);

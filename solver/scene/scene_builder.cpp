@@ -89,14 +89,22 @@ class Builder {
       }
     }
     body_count_.assign(sc_.body_angular_velocity.size(), 0);
+    for (const GeometryShape& g : c.geometry) {
+      Bounds b = g.shape->bounds();
+      for (int k = 0; k < D_; ++k) {  // a margin: a shape's bounds need not hold its surface exactly
+        const double m = 1e-9 * (std::fabs(b.lower[k]) + std::fabs(b.upper[k])) + 1e-12;
+        b.lower[k] -= m, b.upper[k] += m;
+      }
+      box_.push_back(b);
+    }
   }
 
-  // The last geometry holding x owns it (-1: none).
+  // The last geometry holding x owns it (-1: none). The bounding boxes first: an image's
+  // inclusions are many small shapes.
   int owner_of(const double* x) const {
-    int owner = -1;
-    for (std::size_t g = 0; g < c_.geometry.size(); ++g)
-      if (c_.geometry[g].shape->contains(x)) owner = static_cast<int>(g);
-    return owner;
+    for (std::size_t g = c_.geometry.size(); g-- > 0;)
+      if (box_[g].contains(x) && c_.geometry[g].shape->contains(x)) return static_cast<int>(g);
+    return -1;
   }
 
   // A particle of geometry g at x standing for `volume` (a lattice site: dx^D).
@@ -130,10 +138,15 @@ class Builder {
   const double dx_, n_sum_;
   std::vector<int> body_of_geometry_;
   std::vector<long> body_count_;
+  std::vector<Bounds> box_;  // each geometry's bounding box
   long moving_ = 0;  // fluid, elastic and rigid particles: what the forces move
   std::mt19937_64 rng_{12345};  // fixed seed: the same disorder on every run
   std::uniform_real_distribution<double> jitter_;
 };
+
+std::string geometry_name(const Case& c, std::size_t g) {
+  return c.geometry[g].name.empty() ? "geometry[" + std::to_string(g) + "]" : c.geometry[g].name;
+}
 
 // In double: the product of counts overflows an integer before it is checked.
 double lattice_sites(const Scene& sc) {
@@ -192,7 +205,7 @@ void place_own_points(Case& c, Builder& b, const Bounds& part) {
         inside = inside && p.x[k] >= sc.lower[k] && p.x[k] < sc.upper[k];
         // Across a periodic seam its shells would land on lattice sites the other side owns.
         if (sc.periodic[k] && !inside)
-          throw CaseError(c.file + ": geometry[" + std::to_string(g) + "]: a concentric sphere must lie inside the "
+          throw CaseError(c.file + ": " + geometry_name(c, g) + ": a concentric sphere must lie inside the "
                           "domain along its periodic axes; expected a centre and radius that keep it off the seam");
       }
       if (inside && in_part(part, p.x.data(), sc.dimension) && b.owner_of(p.x.data()) == static_cast<int>(g))
@@ -209,8 +222,8 @@ void check_rigid_bodies(const Case& c, const Builder& b) {
   const double dx = sc.options.spacing;
   for (std::size_t g = 0; g < c.geometry.size(); ++g)
     if (b.body_of(g) >= 0 && b.body_count(b.body_of(g)) == 0)
-      throw CaseError(c.file + ": geometry[" + std::to_string(g) +
-                      "]: this rigid body holds no particle (later geometries cover it, or it is smaller than a spacing)");
+      throw CaseError(c.file + ": " + geometry_name(c, g) +
+                      ": this rigid body holds no particle (later geometries cover it, or it is smaller than a spacing)");
   const SceneRigidBodies rb = rigid_bodies_of(sc);
   for (std::size_t g = 0; g < c.geometry.size(); ++g) {
     const int body = b.body_of(g);
@@ -219,7 +232,7 @@ void check_rigid_bodies(const Case& c, const Builder& b) {
     const double det = I[0] * (I[4] * I[8] - I[5] * I[7]) - I[1] * (I[3] * I[8] - I[5] * I[6]) + I[2] * (I[3] * I[7] - I[4] * I[6]);
     const double scale = rb.state[body].mass * dx * dx;
     if (D == 2 ? !(I[8] > 1e-9 * scale) : !(det > 1e-9 * scale * scale * scale))
-      throw CaseError(c.file + ": geometry[" + std::to_string(g) + "]: this rigid body's " +
+      throw CaseError(c.file + ": " + geometry_name(c, g) + ": this rigid body's " +
                       std::to_string(b.body_count(body)) + " particles " +
                       (D == 2 ? "have no moment of inertia" : "lie on a line") + "; expected a body at least two spacings across");
   }

@@ -4,6 +4,7 @@
 // tolerance, passed} (GUIDE §5). Reduced sizes by default, the published sizes with --full.
 #include <functional>
 #include <ostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,11 @@ struct ValidationRecord {
   double error = 0;      // relative error as a fraction, or an absolute difference where stated
   double tolerance = 0;
   bool passed = false;
+};
+
+// A case that cannot run here (its data are missing): reported skipped, never passed.
+struct ValidationUnavailable : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 struct ValidationContext {

@@ -1,0 +1,66 @@
+# poresph report: a short two-phase run (the drainage case, shortened, with a gas column joining the
+# sample's faces: percolation at the first sample) and a single-phase one give PNG plots drawn by
+# matplotlib; several runs together need --out; a folder that is no run directory is refused.
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+file(READ ${SRC}/cases/drainage_2d.toml drain)
+string(REPLACE "end = 0.25" "end = 0.004" t "${drain}")
+string(REPLACE "monitor_interval = 0.005" "monitor_interval = 0.0005" t "${t}")
+string(APPEND t "\n[[geometry]]\nshape = \"box\"\nlower = [2.0e-3, 0.0]\nupper = [2.4e-3, 9.6e-3]\nmaterial = \"gas\"\n")
+file(WRITE ${WORK}/drain.toml "${t}")
+file(READ ${SRC}/cases/poiseuille_2d.toml flow)
+string(REGEX REPLACE "end = [0-9.e-]+" "end = 0.01" flow "${flow}")
+file(WRITE ${WORK}/flow.toml "${flow}")
+foreach(run drain flow)
+  execute_process(COMMAND ${PORESPH} run ${WORK}/${run}.toml --out ${WORK}/${run}_run --quiet RESULT_VARIABLE rc
+                  OUTPUT_VARIABLE o ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${run}: poresph run exited ${rc}: ${o}${err}")
+  endif()
+endforeach()
+
+function(expect_png file)
+  if(NOT EXISTS ${file})
+    message(FATAL_ERROR "no ${file}")
+  endif()
+  file(READ ${file} head LIMIT 8 HEX)
+  file(SIZE ${file} size)
+  if(NOT head STREQUAL "89504e470d0a1a0a" OR size LESS 5000)
+    message(FATAL_ERROR "${file} is not a PNG plot (${head}, ${size} bytes)")
+  endif()
+endfunction()
+
+execute_process(COMMAND ${PORESPH} report ${WORK}/drain_run RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "poresph report exited ${rc}: ${o}${err}")
+endif()
+foreach(p run saturation pressure capillary_pressure)
+  expect_png(${WORK}/drain_run/report/${p}.png)
+endforeach()
+if(NOT o MATCHES "drain_run +0 +0\\.[0-9]+")
+  message(FATAL_ERROR "the report's table has no percolation time 0 and its gas saturation: ${o}")
+endif()
+
+# A single-phase run: its run plot only.
+execute_process(COMMAND ${PORESPH} report ${WORK}/flow_run RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR EXISTS ${WORK}/flow_run/report/saturation.png)
+  message(FATAL_ERROR "single-phase report: exit ${rc}: ${o}${err}")
+endif()
+expect_png(${WORK}/flow_run/report/run.png)
+
+# Several runs: drawn together into --out, which they need.
+execute_process(COMMAND ${PORESPH} report ${WORK}/drain_run ${WORK}/flow_run RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "--out")
+  message(FATAL_ERROR "several runs without --out: exit ${rc}: ${err}")
+endif()
+execute_process(COMMAND ${PORESPH} report ${WORK}/drain_run ${WORK}/drain_run --out ${WORK}/sweep RESULT_VARIABLE rc
+                OUTPUT_VARIABLE o ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "poresph report of two runs exited ${rc}: ${o}${err}")
+endif()
+expect_png(${WORK}/sweep/capillary_pressure.png)
+
+execute_process(COMMAND ${PORESPH} report ${WORK} RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "no monitors.csv")
+  message(FATAL_ERROR "a folder that is no run directory: exit ${rc}: ${err}")
+endif()

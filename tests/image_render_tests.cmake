@@ -1,0 +1,35 @@
+# The imported Berea sample as the phases pipeline renders it (ParaView Catalyst, headless): the
+# drainage case's first frame (the crop's water, the rock, the gas reservoirs), its 3D view and its
+# slab, against tests/baselines/berea_phases_{3d,slab}.png (vtkTesting's difference, threshold
+# 0.15); the same case on another crop of the image must differ (the comparison bites).
+include(${CMAKE_CURRENT_LIST_DIR}/run_poresph.cmake)
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+file(READ ${SRC}/cases/berea_drainage.toml text)
+string(REPLACE "end = 0.005" "end = 1.0e-7" text "${text}")
+string(REPLACE "berea_110.raw" "${ROCKS}/berea_110.raw" text "${text}")
+string(APPEND text "\n[visualisation]\npipelines = [\"phases\"]\nimage_size = [400, 300]\n")
+file(WRITE ${WORK}/berea.toml "${text}")
+string(REPLACE "lower = [10, 30, 20], upper = [34, 54, 52]" "lower = [60, 60, 20], upper = [84, 84, 52]" other "${text}")
+file(WRITE ${WORK}/other.toml "${other}")
+foreach(c berea other)
+  run_poresph(0 run ${WORK}/${c}.toml --out ${WORK}/${c} --quiet)
+endforeach()
+foreach(view 3d slab)
+  set(baseline ${SRC}/tests/baselines/berea_phases_${view}.png)
+  set(actual ${WORK}/berea/images/phases/${view}_000000.png)
+  if(DEFINED ENV{UPDATE_BASELINES})
+    file(COPY_FILE ${actual} ${baseline})
+  endif()
+  execute_process(COMMAND ${IMAGE_DIFF} ${actual} ${baseline} ${WORK}/diff_${view} RESULT_VARIABLE rc OUTPUT_VARIABLE o)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "the ${view} view differs from ${baseline}: ${o} (actual and diff in ${WORK}/diff_${view}; "
+                        "UPDATE_BASELINES=1 accepts it)")
+  endif()
+  execute_process(COMMAND ${IMAGE_DIFF} ${WORK}/other/images/phases/${view}_000000.png ${baseline} ${WORK}/bites_${view}
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE o)
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "another crop matches the ${view} baseline too: the comparison does not bite (${o})")
+  endif()
+endforeach()
+message(STATUS "image render test passed")
