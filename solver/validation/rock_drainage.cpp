@@ -6,10 +6,8 @@
 
 #include "engine/engine.hpp"
 #include "monitors/two_phase.hpp"
-#include "scene/embedded_cases.hpp"
-#include "scene/image_path.hpp"
 #include "scene/scene_builder.hpp"
-#include "validation/validation_cases.hpp"
+#include "validation/rock_permeability.hpp"
 
 namespace psph {
 namespace {
@@ -22,10 +20,7 @@ toml::array vec3(double x, double y, double z) { return toml::array{x, y, z}; }
 }  // namespace
 
 Case berea_drainage_case(const std::array<long, 3>& lower, const std::array<long, 3>& size, double end) {
-  std::vector<std::string> tried;
-  if (find_image_file("berea_110.raw", "cases/berea_drainage.toml", tried).empty())
-    throw ValidationUnavailable("no Berea image (berea_110.raw) in ../shared/data/rocks or PORESPH_IMAGE_PATH");
-  toml::table t = toml::parse(embedded_case_text("berea_drainage"), std::string_view("cases/berea_drainage.toml"));
+  toml::table t = berea_case_table("berea_drainage");
   const double X = double(size[0] + 2 * kSleeve) * kVoxel, Y = double(size[1] + 2 * kSleeve) * kVoxel;
   const double Z = double(size[2] + 2 * kReservoir) * kVoxel, s = double(kSleeve) * kVoxel, r = double(kReservoir) * kVoxel;
   set_case_value(t, "domain.upper", vec3(X, Y, Z));

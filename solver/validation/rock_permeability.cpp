@@ -15,11 +15,15 @@ constexpr double kCropVoxels = 32;   // along each axis
 
 }  // namespace
 
-Case berea_permeability_case(int per_voxel) {
+toml::table berea_case_table(const std::string& name) {
   std::vector<std::string> tried;
-  if (find_image_file("berea_110.raw", "cases/berea_permeability.toml", tried).empty())
+  if (find_image_file("berea_110.raw", "cases/" + name + ".toml", tried).empty())
     throw ValidationUnavailable("no Berea image (berea_110.raw) in ../shared/data/rocks or PORESPH_IMAGE_PATH");
-  toml::table tbl = toml::parse(embedded_case_text("berea_permeability"), std::string_view("cases/berea_permeability.toml"));
+  return toml::parse(embedded_case_text(name), std::string_view("cases/" + name + ".toml"));
+}
+
+Case berea_permeability_case(int per_voxel) {
+  toml::table tbl = berea_case_table("berea_permeability");
   set_case_spacing(tbl, kVoxel / per_voxel);
   tbl["geometry"].as_array()->at(1).as_table()->insert_or_assign("particles_per_voxel", per_voxel);
   Case c = parse_case(tbl, "cases/berea_permeability.toml");

@@ -7,6 +7,10 @@
 
 namespace psph {
 
+// The embedded case `name` (a Berea case) as a table, or ValidationUnavailable where the image
+// is missing.
+toml::table berea_case_table(const std::string& name);
+
 // The case at `per_voxel` particles per voxel (ValidationUnavailable where the image is missing).
 Case berea_permeability_case(int per_voxel);
 Permeability berea_permeability(int per_voxel, const std::string& backend);
