@@ -110,9 +110,10 @@ std::vector<ValidationRecord> sphere_permeability(const ValidationContext& ctx) 
   return out;
 }
 
-// The Berea crop's permeability: --full runs 1, 2 and 3 particles per voxel and extrapolates
-// (Richardson); CI runs 1 against 2's (measured, VALIDATION.md "Segmented images": one particle
-// per voxel gives 0.64 of it, the throats being a few particles wide).
+// The Berea crop's permeability: --full runs 1, 2 and 3 particles per voxel; CI runs 1 against 2's
+// (measured, VALIDATION.md "Permeability of a Berea crop": one particle per voxel gives 0.64 of it,
+// the throats being a few particles wide). The sequence is not monotone (2.60, then 2.53e-11 at 3
+// per voxel), so --full checks that the two finest agree rather than a Richardson order.
 constexpr double kBereaTwoPerVoxel = 2.59917e-11;  // m^2, K at 2 particles per voxel, measured
 constexpr double kBereaCoarseDeficit = 0.3623;     // |K(1)/K(2) - 1| measured
 std::vector<ValidationRecord> berea_permeability_records(const ValidationContext& ctx) {
@@ -131,13 +132,13 @@ std::vector<ValidationRecord> berea_permeability_records(const ValidationContext
                                                 kBereaCoarseDeficit + 0.02)};
   if (!ctx.full) return out;
   const Richardson r = richardson(h, K);
-  if (ctx.log) *ctx.log << "  Richardson: K -> " << r.limit << " m^2 (" << r.limit / 9.869233e-16 << " mD), order " << r.order << "\n";
+  if (ctx.log)
+    *ctx.log << "  Richardson: K -> " << r.limit << " m^2 (" << r.limit / 9.869233e-16 << " mD), order " << r.order
+             << (r.order > 0.5 && r.order < 3 ? "\n" : " (not asymptotic)\n");
   out.push_back(make_record("berea_permeability", "|K(2 per voxel)/K(2 per voxel, measured) - 1|", K[1], kBereaTwoPerVoxel,
                             std::fabs(K[1] / kBereaTwoPerVoxel - 1), 0.01));
-  out.push_back(make_record("berea_permeability", "observed order of convergence - 1.75 (asymptotic: within 1.25)", r.order,
-                            1.75, std::fabs(r.order - 1.75), 1.25));
-  out.push_back(make_record("berea_permeability", "|K(3 per voxel)/K_extrapolated - 1|", K[2], r.limit,
-                            std::fabs(K[2] / r.limit - 1), 0.1));
+  out.push_back(make_record("berea_permeability", "|K(3 per voxel)/K(2 per voxel) - 1| (resolved)", K[2], K[1],
+                            std::fabs(K[2] / K[1] - 1), 0.05));
   return out;
 }
 
@@ -436,7 +437,7 @@ const std::vector<ValidationCase>& validation_cases() {
        two_phase_poiseuille},
       {"sphere_permeability", "Pazdniakou 2018 §4.2 permeability of periodic sphere arrays (Tables 2-3)",
        sphere_permeability},
-      {"berea_permeability", "permeability of a Berea sandstone crop (micro-CT image) against its resolution study's limit",
+      {"berea_permeability", "permeability of a Berea sandstone crop (micro-CT image) against its finer resolutions (2 and 3 particles per voxel)",
        berea_permeability_records},
       {"berea_drainage", "gas drains water from a Berea sandstone crop: it percolates, Pc at breakthrough below Delta P",
        berea_drainage_records},
