@@ -164,11 +164,15 @@ nlohmann::json resolve_vis_settings(const Case& c, const ParticleFrame& first, c
     if (f.name == "phase") continue;  // categorical
     const auto it = v.ranges.find(f.name);
     ranges[f.name] = it != v.ranges.end() ? it->second : default_range(f.name, first, p_scale);
+    // Displacements start at zero: a fifth of a spacing either way (small-strain solids).
+    if (f.name == "displacement" && it == v.ranges.end())
+      ranges[f.name] = std::array<double, 2>{-0.2 * c.scene.options.spacing, 0.2 * c.scene.options.spacing};
   }
   for (const auto& [name, r] : v.ranges) ranges[name] = r;
   maps["pressure"] = "Viridis (matplotlib)";
   maps["damage"] = "Inferno (matplotlib)";
   maps["principal_stress"] = "Cool to Warm";
+  maps["displacement"] = "Cool to Warm";
   maps["colour"] = "Blue Orange (divergent)";
   for (const auto& [name, m] : v.colour_maps) maps[name] = m;
   j["ranges"] = ranges;

@@ -34,14 +34,15 @@ ParticleFrame scene() {
   const int nx = 16, ny = 10, nz = 8;
   f.dimension = 3;
   f.n = nx * ny * nz;
-  f.fields.reserve(6);  // the references below stay valid
+  f.fields.reserve(7);  // the references below stay valid
   auto& phase = f.slot("phase");
   auto& pressure = f.slot("pressure");
   auto& damage = f.slot("damage");
   auto& colour = f.slot("colour");
   auto& sigma = f.slot("principal_stress");
   auto& dir = f.slot("principal_direction");
-  sigma.components = dir.components = 3;
+  auto& disp = f.slot("displacement");
+  sigma.components = dir.components = disp.components = 3;
   for (int i = 0; i < nx; ++i)
     for (int j = 0; j < ny; ++j)
       for (int k = 0; k < nz; ++k) {
@@ -57,6 +58,7 @@ ParticleFrame scene() {
         const double s1 = 200 * std::sin(2.5 * x) * std::cos(2 * y);
         sigma.data.insert(sigma.data.end(), {float(s1), float(s1 - 50), float(s1 - 120)});
         dir.data.insert(dir.data.end(), {1.f, 0.f, 0.f});
+        disp.data.insert(disp.data.end(), {float(0.01 * std::sin(4 * x) * std::cos(3 * y)), 0.f, 0.f});
       }
   return f;
 }
@@ -65,9 +67,9 @@ nlohmann::json settings(const fs::path& out, const std::string& mode) {
   nlohmann::json cam = {{"position", {0.8, 2.2, 3.6}}, {"focal_point", {0.8, 0.5, 0.4}}, {"view_up", {0, 1, 0}}};
   if (mode == "--wrong-camera") cam["position"] = {2.8, 1.2, 2.6};
   nlohmann::json ranges = {{"pressure", {0, 1000}}, {"damage", {0, 0.999}}, {"colour", {0, 1}},
-                           {"principal_stress", {-250, 250}}};
+                           {"principal_stress", {-250, 250}}, {"displacement", {-0.01, 0.01}}};
   if (mode == "--wrong-range") ranges = {{"pressure", {0, 3000}}, {"damage", {0, 3}}, {"colour", {0, 4}},
-                                         {"principal_stress", {0, 1000}}};
+                                         {"principal_stress", {0, 1000}}, {"displacement", {0, 0.05}}};
   return {{"dimension", 3},
           {"image_size", {320, 240}},
           {"images_dir", (out / "images").string()},
@@ -87,6 +89,7 @@ nlohmann::json settings(const fs::path& out, const std::string& mode) {
            {{"pressure", "Viridis (matplotlib)"},
             {"damage", "Inferno (matplotlib)"},
             {"principal_stress", "Cool to Warm"},
+            {"displacement", "Cool to Warm"},
             {"colour", "Blue Orange (divergent)"}}}};
 }
 

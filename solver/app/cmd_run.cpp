@@ -14,9 +14,9 @@ namespace psph {
 namespace {
 
 // Loads a case and builds its particles; prints the error and returns false on bad input.
-bool prepare(Case& c, const std::string& path, const std::string* text) {
+bool prepare(Case& c, const std::string& path, const std::string* text, const std::vector<std::string>& sets = {}) {
   try {
-    c = text ? load_case_text(*text, path) : load_case_file(path);
+    c = text ? load_case_text(*text, path, sets) : load_case_file(path, sets);
     build_particles(c);
     return true;
   } catch (const CaseError& e) {
@@ -29,9 +29,9 @@ int drive(Case& c, const RunOptions& opt) { return RunDriver(c, opt).run(); }
 
 }  // namespace
 
-int cmd_check(const std::string& path) {
+int cmd_check(const std::string& path, const std::vector<std::string>& sets) {
   Case c;
-  if (!prepare(c, path, nullptr)) return 2;
+  if (!prepare(c, path, nullptr, sets)) return 2;
   try {
     // What `run` builds before its run directory: the engine (on the CPU: the same fields on
     // every backend), the output fields it has, the pipelines and the fields they declare.
@@ -52,7 +52,7 @@ int cmd_check(const std::string& path) {
 
 int cmd_run(const std::string& path, const RunOptions& opt) {
   Case c;
-  if (!prepare(c, path, nullptr)) return 2;
+  if (!prepare(c, path, nullptr, opt.sets)) return 2;
   return drive(c, opt);
 }
 

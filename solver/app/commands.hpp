@@ -14,13 +14,14 @@ struct RunOptions {
   std::string live;                    // HOST:PORT of a ParaView GUI for Catalyst Live
   int serve = -1;                      // dashboard port (0: any free one); -1: no dashboard
   std::string bind = "127.0.0.1";      // the dashboard's address
+  std::vector<std::string> sets;       // KEY=VALUE and KEY (--set, --unset; scene/case_file.hpp), in order
 };
 
 // Exit codes: 0 done, 2 bad input (nothing written), 3 unstable run (diagnostic in log.txt),
 // 4 runtime failure, 5 an output could not be written (disk full), 130 interrupted.
 int cmd_run(const std::string& case_path, const RunOptions& opt);
 int cmd_demo(const RunOptions& opt);
-int cmd_check(const std::string& case_path);
+int cmd_check(const std::string& case_path, const std::vector<std::string>& sets = {});
 // Re-renders a run's figure sequences from its extracts (`pipelines` empty = the run's own).
 int cmd_figures(const std::string& run_dir, const std::vector<std::string>& pipelines);
 // Serves the dashboard of a run directory (finished, or still running in another process) until

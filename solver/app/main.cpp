@@ -23,9 +23,13 @@ int main(int argc, char** argv) {
   run->add_flag("--quiet", ro.quiet, "no progress lines on the terminal");
   run->add_option("--restart", ro.restart, "continue from a checkpoint file, or a run directory's newest checkpoint");
   run->add_option("--pipeline", ro.pipelines, "Catalyst pipeline: a name in pipelines/ (phases, pressure, damage, "
-                 "principal_stress, colour) or a .py script; repeatable");
+                 "principal_stress, displacement, colour) or a .py script; repeatable");
   run->add_option("--live", ro.live, "HOST:PORT of a ParaView GUI to attach with Catalyst Live");
   run->add_option("--serve", ro.serve, "serve the browser dashboard on this port (0: any free port)")->check(CLI::Range(0, 65535));
+  run->add_option("--set", ro.sets, "KEY=VALUE: override a case value, e.g. sample.confinement=0.16 (repeatable)");
+  run->add_option_function<std::vector<std::string>>(
+      "--unset", [&](const std::vector<std::string>& keys) { ro.sets.insert(ro.sets.end(), keys.begin(), keys.end()); },
+      "KEY: remove a case key or table, e.g. damage (repeatable)");
   run->add_option("--bind", ro.bind, "the dashboard's address (default 127.0.0.1; 0.0.0.0 for every interface)");
 
   int serve_port = 8080;
@@ -48,6 +52,10 @@ int main(int argc, char** argv) {
 
   auto* check = app.add_subcommand("check", "validate a case file, run nothing");
   check->add_option("case", case_path, "case file (TOML)")->required();
+  check->add_option("--set", ro.sets, "KEY=VALUE: override a case value (repeatable)");
+  check->add_option_function<std::vector<std::string>>(
+      "--unset", [&](const std::vector<std::string>& keys) { ro.sets.insert(ro.sets.end(), keys.begin(), keys.end()); },
+      "KEY: remove a case key or table (repeatable)");
 
   std::vector<std::string> names;
   bool full = false, json = false, quick = false, accuracy = false, stability = false;
@@ -86,7 +94,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   const auto dispatch = [&]() -> int {
     if (*run) return psph::cmd_run(case_path, ro);
-    if (*check) return psph::cmd_check(case_path);
+    if (*check) return psph::cmd_check(case_path, ro.sets);
     if (*serve) return psph::cmd_serve(run_dir, serve_port, serve_bind);
     if (*figures) return psph::cmd_figures(run_dir, fig_pipelines);
     if (*report) return psph::cmd_report(report_dirs, report_out);

@@ -139,7 +139,7 @@ void RunDriver::plan_outputs() {
   dt_ext_ = c_.output.extract_interval > 0 ? c_.output.extract_interval : insitu_->active() ? dt_vis_ : t_end;
   const double dt_ck = c_.output.checkpoint_interval > 0 ? c_.output.checkpoint_interval : t_end / 10;
   mon_ = OutputClock(dt_mon_, t), ext_ = OutputClock(dt_ext_, t), ck_ = OutputClock(dt_ck, t), vis_ = OutputClock(dt_vis_, t);
-  if (c_.two_phase) two_phase_ = std::make_unique<TwoPhaseMonitor>(c_.scene, c_.monitor_region);
+  if (c_.two_phase) two_phase_ = std::make_unique<TwoPhaseMonitor>(c_.scene, c_.monitor_region, c_.stress_scale);
 }
 
 int RunDriver::start() {
@@ -355,9 +355,15 @@ nlohmann::json RunDriver::summary(double wall) const {
   if (two_phase_) {
     const TwoPhaseSample& s = two_phase_->last();
     const double tp = two_phase_->percolation_time();
+    const double sp = two_phase_->saturation_at_percolation();
     j["two_phase"] = {{"percolation_time", tp >= 0 ? nlohmann::json(tp) : nlohmann::json(nullptr)},
+                      {"saturation_gas_at_percolation", tp >= 0 ? nlohmann::json(sp) : nlohmann::json(nullptr)},
                       {"saturation_gas", s.saturation_gas},
-                      {"capillary_pressure", s.pressure_gas - s.pressure_liquid}};
+                      {"porosity", s.porosity},
+                      {"capillary_pressure", s.pressure_gas - s.pressure_liquid},
+                      {"flow_axis", std::string(1, "xyz"[c_.monitor_region.flow_axis])}};
+    if (c_.stress_scale > 0) j["stress_scale"] = c_.stress_scale;
+    if (c_.length_scale != 1) j["length_scale"] = c_.length_scale;
   }
   return j;
 }

@@ -30,6 +30,7 @@ class Simulation final : public Engine {
  public:
   explicit Simulation(const Scene& sc) : opt_(sc.options) {
     if (sc.dimension != D) throw std::logic_error("scene dimension mismatch");
+    for (const auto& m : sc.materials) material_names_.push_back(m.name);
     setup_context(sc);
     interface_.setup(cx_, opt_);
     elastic_.setup(cx_, opt_, cx_.elastic ? clamp_mirror_partners(sc) : std::vector<std::int32_t>{},
@@ -198,6 +199,7 @@ class Simulation final : public Engine {
   void setup_rigid(const Scene& sc);
   double next_dt(double t_stop);
   void check_health();
+  std::string culprit(const BadParticle<D>& bad, int code);
   std::string when() const { return " at t = " + std::to_string(t_) + " s, step " + std::to_string(steps_); }
 
   SolverOptions opt_;
@@ -214,6 +216,7 @@ class Simulation final : public Engine {
   double t_ = 0, dt_ = 0, dt_first_ = 0;
   long steps_ = 0;
   std::string dt_limit_ = "none";
+  std::vector<std::string> material_names_;
 };
 
 }  // namespace psph

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <stdexcept>
 
 #include "engine/simulation.hpp"
@@ -89,16 +90,37 @@ double Simulation<D, B>::next_dt(double t_stop) {
 template <int D, class B>
 void Simulation<D, B>::check_health() {
   const double limit = opt_.max_density_deviation > 0 ? opt_.max_density_deviation : 1e30;
-  const int bad = cx_.template max_of<int>(BadParticle<D>{cx_.view(), cx_.grid, cx_.mats, Real(limit)});
-  if (bad == 4) throw InstabilityError("non-finite particle state (NaN or Inf)" + when());
-  if (bad == 3) throw InstabilityError("a particle left the domain through a closed side" + when());
+  const BadParticle<D> check{cx_.view(), cx_.grid, cx_.mats, Real(limit)};
+  const int bad = cx_.template max_of<int>(check);
+  if (bad == 0) return;
+  const std::string who = culprit(check, bad);
+  if (bad == 4) throw InstabilityError("non-finite particle state (NaN or Inf)" + when() + who);
+  if (bad == 3) throw InstabilityError("a particle left the domain through a closed side" + when() + who);
   if (bad == 2)
-    throw InstabilityError("an elastic particle moves faster than its P-wave speed" + when() +
+    throw InstabilityError("an elastic particle moves faster than its P-wave speed" + when() + who +
                            ": the solid went unstable (lower solver.dt_factor)");
   if (bad == 1)
     throw InstabilityError("a fluid density is more than " + std::to_string(100 * opt_.max_density_deviation) +
-                           " % off its reference" + when() +
+                           " % off its reference" + when() + who +
                            ": the flow is no longer weakly compressible (raise the sound speed or lower dt_factor)");
+}
+
+// Which particle failed the check, its material, where it is and how fast it moves (a reduction and
+// a download, on the failure path only).
+template <int D, class B>
+std::string Simulation<D, B>::culprit(const BadParticle<D>& bad, int code) {
+  const int i = cx_.template max_of<int>(BadParticleIndex<D>{bad, code});
+  if (i < 0) return "";
+  std::vector<Vec<D>> x, v;
+  std::vector<std::uint8_t> mat;
+  std::vector<std::int32_t> id;
+  cx_.s.x.download(x), cx_.s.v.download(v), cx_.s.material.download(mat), cx_.s.id.download(id);
+  std::ostringstream o;
+  o.precision(4);
+  o << " (particle " << id[std::size_t(i)] << ", material " << material_names_.at(mat[std::size_t(i)]) << ", at (";
+  for (int k = 0; k < D; ++k) o << (k ? ", " : "") << x[std::size_t(i)][k];
+  o << ") m, speed " << norm(v[std::size_t(i)]) << " m/s)";
+  return o.str();
 }
 
 template <int D, class B>

@@ -56,6 +56,14 @@ struct BadParticle {
   }
 };
 
+// The index of a particle for which BadParticle returns `code` (-1: none; the failure path only).
+template <int D>
+struct BadParticleIndex {
+  BadParticle<D> bad;
+  int code;
+  PSPH_HD int operator()(int i) const { return bad(i) == code ? i : -1; }
+};
+
 template <int D>
 struct SpeedOf {
   ParticleView<D> s;

@@ -114,6 +114,9 @@ TwoPhaseSample sample_two_phase(const Scene& sc, const MonitorRegion& region, co
   }
   const double total = vol[0] + vol[1];
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  double region_volume = 1;
+  for (int k = 0; k < D; ++k) region_volume *= region.upper[k] - region.lower[k];
+  s.porosity = region_volume > 0 ? total / region_volume : nan;
   s.saturation_liquid = total > 0 ? vol[0] / total : nan;
   s.saturation_gas = total > 0 ? vol[1] / total : nan;
   s.pressure_liquid = vol[0] > 0 ? pv[0] / vol[0] : nan;
@@ -126,17 +129,20 @@ TwoPhaseSample sample_two_phase(const Scene& sc, const MonitorRegion& region, co
   return s;
 }
 
-TwoPhaseMonitor::TwoPhaseMonitor(const Scene& sc, const MonitorRegion& region)
-    : sc_(sc), region_(region), capillary_speed_(capillary_speed(sc)) {}
+TwoPhaseMonitor::TwoPhaseMonitor(const Scene& sc, const MonitorRegion& region, double stress_scale)
+    : sc_(sc), region_(region), capillary_speed_(capillary_speed(sc)), stress_scale_(stress_scale),
+      s_perc_(std::numeric_limits<double>::quiet_NaN()) {}
 
 std::vector<std::string> TwoPhaseMonitor::columns() const {
   const char* axes = "xyz";
-  std::vector<std::string> c = {"saturation_liquid", "saturation_gas", "pressure_liquid", "pressure_gas",
+  std::vector<std::string> c = {"saturation_liquid", "saturation_gas", "porosity", "pressure_liquid", "pressure_gas",
                                 "capillary_pressure"};
   for (const char* phase : {"liquid", "gas"})
     for (int k = 0; k < sc_.dimension; ++k) c.push_back(std::string("velocity_") + phase + "_" + axes[k]);
   c.push_back("percolation_time");
   if (capillary_speed_ > 0) c.push_back("v_max_over_sigma_mu");
+  if (stress_scale_ > 0)
+    for (const char* p : {"pressure_liquid_MPa", "pressure_gas_MPa", "capillary_pressure_MPa"}) c.push_back(p);
   return c;
 }
 
@@ -146,9 +152,9 @@ std::vector<double> TwoPhaseMonitor::sample(Engine& e) {
   std::vector<double> volume(m.size());
   for (std::size_t i = 0; i < m.size(); ++i) volume[i] = m[i] / rho[i];
   last_ = sample_two_phase(sc_, region_, x, v, p, volume, mat);
-  if (last_.percolated && t_perc_ < 0) t_perc_ = e.time();
-  std::vector<double> row = {last_.saturation_liquid, last_.saturation_gas, last_.pressure_liquid, last_.pressure_gas,
-                             last_.pressure_gas - last_.pressure_liquid};
+  if (last_.percolated && t_perc_ < 0) t_perc_ = e.time(), s_perc_ = last_.saturation_gas;
+  std::vector<double> row = {last_.saturation_liquid, last_.saturation_gas, last_.porosity, last_.pressure_liquid,
+                             last_.pressure_gas, last_.pressure_gas - last_.pressure_liquid};
   for (const auto* u : {&last_.velocity_liquid, &last_.velocity_gas})
     for (int k = 0; k < sc_.dimension; ++k) row.push_back((*u)[k]);
   row.push_back(t_perc_ >= 0 ? t_perc_ : std::numeric_limits<double>::quiet_NaN());
@@ -162,6 +168,9 @@ std::vector<double> TwoPhaseMonitor::sample(Engine& e) {
     }
     row.push_back(vmax / capillary_speed_);
   }
+  if (stress_scale_ > 0)
+    for (const double p : {last_.pressure_liquid, last_.pressure_gas, last_.pressure_gas - last_.pressure_liquid})
+      row.push_back(p * stress_scale_ * 1e-6);
   return row;
 }
 

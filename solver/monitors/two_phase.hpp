@@ -1,6 +1,8 @@
 #pragma once
 // Two-phase monitors (monitors.csv, one row per monitor step): in a box region, the saturation of
-// each phase, the mean phase pressures and the capillary pressure, the mean phase velocities, the
+// each phase, the porosity (the fluids' volume over the region's: Deptulski 2021 Fig. 5.6a), the
+// mean phase pressures and the capillary pressure, the mean phase velocities (seepage velocities,
+// Pazdniakou 2018 Fig. 12), the
 // first time a connected gas cluster joins the region's inlet and outlet faces (percolation,
 // Pazdniakou 2018 §5.2.2, Table 5; the paper does not define it, this is ours), and the largest
 // speed relative to sigma/mu (the spurious currents of a static case). Computed on the host from
@@ -17,6 +19,7 @@ namespace psph {
 
 struct TwoPhaseSample {
   double saturation_liquid = 0, saturation_gas = 0;  // fluid volume fractions in the region
+  double porosity = 0;                               // fluid volume / region volume
   double pressure_liquid = 0, pressure_gas = 0;      // volume-weighted means (Pa)
   std::array<double, 3> velocity_liquid{0, 0, 0}, velocity_gas{0, 0, 0};  // volume-weighted means
   bool percolated = false;                           // a gas cluster joins inlet and outlet now
@@ -35,18 +38,21 @@ bool gas_percolates(const Scene& sc, const MonitorRegion& region, const std::vec
 
 class TwoPhaseMonitor {
  public:
-  TwoPhaseMonitor(const Scene& sc, const MonitorRegion& region);
+  // stress_scale > 0: the pressures also in physical MPa (columns *_MPa; Case::stress_scale).
+  TwoPhaseMonitor(const Scene& sc, const MonitorRegion& region, double stress_scale = 0);
   std::vector<std::string> columns() const;
   // The row for the engine's current state (percolation_time is NaN until gas percolates).
   std::vector<double> sample(Engine& e);
   double percolation_time() const { return t_perc_; }  // < 0: not yet
+  double saturation_at_percolation() const { return s_perc_; }  // gas saturation then (NaN: not yet)
   const TwoPhaseSample& last() const { return last_; }
 
  private:
   const Scene& sc_;
   MonitorRegion region_;
   double capillary_speed_ = 0;  // sigma / mu_liquid, 0 without surface tension
-  double t_perc_ = -1;
+  double stress_scale_ = 0;
+  double t_perc_ = -1, s_perc_;
   TwoPhaseSample last_;
 };
 

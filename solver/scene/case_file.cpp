@@ -4,6 +4,7 @@
 #include "scene/case_file.hpp"
 
 #include "scene/case_tables.hpp"
+#include "scene/sample_table.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -32,7 +33,13 @@ void read_time_and_output(CaseReader& top, CaseDraft& d);  // [time], [output], 
 void read_monitors(CaseReader& top, CaseDraft& d);         // [monitors]
 void read_geometry(CaseReader& top, CaseDraft& d);         // [[geometry]]
 
-Case parse_case(const toml::table& tbl, const std::string& file) {
+Case parse_case(const toml::table& given, const std::string& file) {
+  if (given.contains("sample")) {  // a copy: toml++ drops the lines of copied nodes (load_case_text expands in place)
+    toml::table copy = given;
+    expand_sample(copy, file);
+    return parse_case(copy, file);
+  }
+  const toml::table& tbl = given;
   Case c;
   c.file = file;
   CaseDraft d(c, file);
@@ -111,7 +118,51 @@ TextScan scan_case_text(const std::string& text) {
 
 }  // namespace
 
-Case load_case_text(const std::string& text, const std::string& file) {
+namespace {
+
+// A dotted key of letters, digits, '_' and '-'.
+bool valid_dotted_key(const std::string& key) {
+  return !key.empty() && key.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.") == std::string::npos &&
+         key.front() != '.' && key.back() != '.' && key.find("..") == std::string::npos;
+}
+
+// KEY removed from `tbl` (--unset).
+void apply_unset(toml::table& tbl, const std::string& key, const std::string& file) {
+  toml::table* t = &tbl;
+  std::size_t start = 0;
+  for (std::size_t dot; (dot = key.find('.', start)) != std::string::npos; start = dot + 1) {
+    t = t->get_as<toml::table>(key.substr(start, dot - start));
+    if (!t) break;
+  }
+  if (!t || !t->contains(key.substr(start)))
+    throw CaseError(file + ": --unset " + shown(key) + ": expected a key or table the case file sets");
+  t->erase(key.substr(start));
+}
+
+// "KEY=VALUE" into `tbl`, or "KEY" out of it (load_case_text's sets).
+void apply_set(toml::table& tbl, const std::string& set, const std::string& file) {
+  const std::size_t eq = set.find('=');
+  if (eq == std::string::npos && valid_dotted_key(set)) return apply_unset(tbl, set, file);
+  const std::string key = eq == std::string::npos ? "" : set.substr(0, eq), text = eq == std::string::npos ? "" : set.substr(eq + 1);
+  if (!valid_dotted_key(key) || text.empty() || text.size() > 4096)
+    throw CaseError(file + ": --set " + shown(set) + ": expected KEY=VALUE with a dotted key of letters, digits, '_' "
+                    "and '-' (e.g. sample.confinement=0.16)");
+  toml::table value;
+  try {
+    value = toml::parse("v = " + text);
+  } catch (const toml::parse_error&) {
+    value = toml::table{{"v", text}};  // a bare word: a string
+  }
+  try {
+    set_case_value(tbl, key, *value.get("v"));
+  } catch (const std::logic_error&) {
+    throw CaseError(file + ": --set " + shown(set) + ": expected a key inside tables, not inside an array of tables or a value");
+  }
+}
+
+}  // namespace
+
+Case load_case_text(const std::string& text, const std::string& file, const std::vector<std::string>& sets) {
   if (text.size() > kMaxCaseBytes)
     throw CaseError(file + ": the case file holds " + std::to_string(text.size()) + " bytes; expected at most " +
                     std::to_string(kMaxCaseBytes) + " (1 MiB)");
@@ -129,11 +180,13 @@ Case load_case_text(const std::string& text, const std::string& file) {
     throw CaseError(file + " (line " + std::to_string(e.source().begin.line) + "): not valid TOML: " +
                     shown(std::string(e.description()), 200));
   }
+  for (const std::string& set : sets) apply_set(tbl, set, file);
+  expand_sample(tbl, file);  // [sample] -> the tables it stands for (scene/sample_table.hpp)
   return parse_case(tbl, file);
 }
 
 // Only a regular file of bounded size is read: a FIFO or a device would block or never end.
-Case load_case_file(const std::string& path) {
+Case load_case_file(const std::string& path, const std::vector<std::string>& sets) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
   if (ec || !std::filesystem::exists(status)) throw CaseError(path + ": cannot open the case file");
@@ -148,7 +201,7 @@ Case load_case_file(const std::string& path) {
   std::string text(kMaxCaseBytes + 1, '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
   text.resize(static_cast<std::size_t>(in.gcount()));
-  return load_case_text(text, path);
+  return load_case_text(text, path, sets);
 }
 
 void set_case_value(toml::table& tbl, const std::string& dotted_key, const toml::node& value) {

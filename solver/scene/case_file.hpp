@@ -43,6 +43,9 @@ struct OutputOptions {
 struct Case {
   std::string file;  // where it came from (for messages)
   std::string name, description;
+  // Physical per case units ([case] stress_scale, length_scale): the scaled cases of the references
+  // (Pazdniakou 2018 §5.2: 0.3 Pa for 15 MPa, 5e7) report physical values beside the scaled ones.
+  double stress_scale = 0, length_scale = 1;  // 0: no physical stresses reported
   Scene scene;       // domain, materials, options (particles filled by the scene builder)
   std::vector<GeometryShape> geometry;
   double end_time = 0;
@@ -56,8 +59,11 @@ struct Case {
 
 // Parses and checks a case. `file` is used in messages only.
 Case parse_case(const toml::table& tbl, const std::string& file);
-Case load_case_file(const std::string& path);
-Case load_case_text(const std::string& text, const std::string& file);
+// `sets`: overrides applied to the file's table before it is read (poresph run --set, --unset):
+// "KEY=VALUE", KEY dotted (sample.confinement), VALUE a TOML value (0.16, "gas", [1, 2]) or else a
+// string; "KEY" alone (--unset) removes that key or table, which must be there.
+Case load_case_file(const std::string& path, const std::vector<std::string>& sets = {});
+Case load_case_text(const std::string& text, const std::string& file, const std::vector<std::string>& sets = {});
 
 // output.fields against the particle fields this case's engine has (`available`): throws a
 // CaseError naming the first unknown field and the ones there are.

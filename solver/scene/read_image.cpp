@@ -241,6 +241,32 @@ void trim_walls(CaseReader& r, const CaseDraft& d, ImageGrid& g, Phases& ph) {
   replace_deep_voxels(g.volume, walls, reach, d.dimension(), phase_of(r, ph, -1, "wall_depth"));
 }
 
+// end_plates (a wall material), end_plate_thickness (m), end_plate_axis (default the case's last):
+// the voxels of solid materials within that thickness of the image's two faces along the axis take
+// the wall material, the pores stay open (Pazdniakou 2018 §5.2: rigid plates hold the sample top
+// and bottom, so that it does not drift, and gas enters and water leaves through its pores).
+void end_plates(CaseReader& r, const CaseDraft& d, ImageGrid& g, Phases& ph) {
+  for (const char* key : {"end_plate_thickness", "end_plate_axis"})
+    if (!r.has("end_plates") && r.has(key)) r.fail(key, "expected end_plates (a wall material) for it to apply to");
+  if (!r.has("end_plates")) return;
+  const int plate = d.material(r, "end_plates", MaterialKind::Wall, "a wall material");
+  const int axis = r.axis("end_plate_axis", d.dimension(), std::string(1, "xyz"[d.dimension() - 1]));
+  const double t = r.positive("end_plate_thickness");
+  const long n = g.volume.size[std::size_t(axis)], layers = long(std::ceil(t / g.voxel[std::size_t(axis)] - 1e-9));
+  if (2 * layers >= n)
+    r.fail("end_plate_thickness", "expected two plates thinner than half the image along " + std::string(1, "xyz"[axis]) +
+                                      " (" + std::to_string(n) + " voxels; the plates take " + std::to_string(layers) + " each)");
+  const std::uint8_t to = phase_of(r, ph, plate, "end_plates");
+  const auto& size = g.volume.size;
+  for (long i = 0; i < g.volume.voxels(); ++i) {
+    const std::array<long, 3> q{i % size[0], i / size[0] % size[1], i / (size[0] * size[1])};
+    const long a = q[std::size_t(axis)];
+    const int m = ph.material[g.volume.phase[std::size_t(i)]];
+    const bool solid = m >= 0 && d.c.scene.materials[std::size_t(m)].props.kind != MaterialKind::Fluid;
+    if (solid && (a < layers || a >= n - layers)) g.volume.phase[std::size_t(i)] = to;
+  }
+}
+
 bool is_rigid(const CaseDraft& d, int mat) {
   return mat >= 0 && d.c.scene.materials[std::size_t(mat)].props.kind == MaterialKind::Rigid;
 }
@@ -325,6 +351,7 @@ void read_image_geometry(CaseReader& r, CaseDraft& d, std::size_t index) {
   for (const char* key : {"pores", "percolation_axis", "other_pores"})
     if (!ph.pore && r.has(key)) r.fail(key, "expected a label mapped to a fluid (the pore space) for it to apply to");
   place(r, d, *g, spec);
+  end_plates(r, d, *g, ph);
   trim_walls(r, d, *g, ph);
   const std::string name = "geometry[" + std::to_string(index) + "]";
   add_inclusions(r, d, g, ph, file, name);

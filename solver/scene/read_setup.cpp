@@ -49,6 +49,8 @@ void read_case_table(CaseReader& top, CaseDraft& d) {
   const long dim = r.integer("dimension");
   if (dim < 1 || dim > 3) r.fail("dimension", "expected 1, 2 or 3, got " + std::to_string(dim));
   d.c.scene.dimension = static_cast<int>(dim);
+  d.c.stress_scale = r.has("stress_scale") ? r.positive("stress_scale") : 0.0;
+  d.c.length_scale = r.positive("length_scale", 1.0);
   r.finish();
 }
 

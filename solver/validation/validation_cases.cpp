@@ -8,6 +8,7 @@
 #include "scene/scene_builder.hpp"
 #include "validation/capillary_entry.hpp"
 #include "validation/channel_flow.hpp"
+#include "validation/claystone_drainage.hpp"
 #include "validation/damage_validations.hpp"
 #include "validation/elastic_cube.hpp"
 #include "validation/lame_cylinder.hpp"
@@ -441,6 +442,8 @@ const std::vector<ValidationCase>& validation_cases() {
        berea_permeability_records},
       {"berea_drainage", "gas drains water from a Berea sandstone crop: it percolates, Pc at breakthrough below Delta P",
        berea_drainage_records},
+      {"claystone_drainage", "gas drains a claystone sample with a damaging clay matrix at 6 MPa: the monitors agree with each other (--full: Pazdniakou 2018 Table 5)",
+       claystone_drainage_records},
       {"laplace_bubble_2d", "Pazdniakou 2018 §4.4 Laplace law, here a 2D bubble (paper: 2 % in 3D)",
        [](const ValidationContext& ctx) {
          return laplace(ctx, 2, ctx.full ? std::vector<double>{4, 6, 8, 12, 16} : std::vector<double>{8, 12});

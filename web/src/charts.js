@@ -7,7 +7,10 @@ import { number } from './format.js';
 const GROUPS = [
   { title: 'Energies (J)', match: (c) => /_energy$/.test(c) },
   { title: 'Saturations', match: (c) => /^saturation_/.test(c) },
+  { title: 'Porosity', match: (c) => c === 'porosity' },
   { title: 'Pressures (Pa)', match: (c) => /^(capillary_pressure|pressure_liquid|pressure_gas)$/.test(c) },
+  { title: 'Pressures (MPa, physical)', match: (c) => /_MPa$/.test(c) },
+  { title: 'Seepage velocities (m/s)', match: (c) => /^velocity_(liquid|gas)_/.test(c) },
   { title: 'Percolation time (s)', match: (c) => c === 'percolation_time' },
   { title: 'Damage', match: (c) => /damage/.test(c) || c === 'ghost_particles' },
   { title: 'Time step (s)', match: (c) => c === 'dt' },
