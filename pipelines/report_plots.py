@@ -142,6 +142,11 @@ def plot_damage(runs, out):
 def percolation_table(runs, out):
     head = "| run | percolation time (s) | gas saturation then | porosity at start | porosity at end | damaged particles at end |"
     lines = [head, "|" + "---|" * 6]
+
+    def last(values, fmt):  # a run still writing may end on an empty cell
+        v = [x for x in values if not math.isnan(x)]
+        return fmt % v[-1] if v else ""
+
     for r in runs:
         tp, sg = percolation(r)
         c = r["col"]
@@ -149,7 +154,7 @@ def percolation_table(runs, out):
         dmg = c.get("damaged_particles", [])
         lines.append("| %s | %s | %s | %s | %s | %s |" % (
             r["name"], "none" if tp is None else "%.6g" % tp, "" if sg is None else "%.4f" % sg,
-            "%.4f" % por[0] if por else "", "%.4f" % por[-1] if por else "", "%d" % dmg[-1] if dmg else ""))
+            last(por[:1], "%.4f"), last(por, "%.4f"), last(dmg, "%d")))
     path = os.path.join(out, "percolation.md")
     with open(path + ".tmp", "w") as f:
         f.write("\n".join(lines) + "\n")

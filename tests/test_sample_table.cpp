@@ -179,10 +179,15 @@ TEST(SampleTable, SetOverridesAValueBeforeTheCaseIsRead) {
   EXPECT_NE(error_of(kCase, {"sample.confinement=-1"}).find("sample.confinement"), std::string::npos);
   EXPECT_NE(error_of(kCase, {"bad key=1"}).find("expected KEY=VALUE"), std::string::npos);
   EXPECT_NE(error_of(kCase, {"=1"}).find("expected KEY=VALUE"), std::string::npos);
-  // A key alone (--unset) removes it: without confinement, no loads; an absent key is refused.
-  EXPECT_TRUE(built(kCase, {"sample.confinement"}).scene.solid_loads.empty());
-  EXPECT_NE(error_of(kCase, {"sample.confinment"}).find("--unset sample.confinment: expected a key or table"), std::string::npos);
-  EXPECT_NE(error_of(kCase, {"damage"}).find("--unset damage"), std::string::npos);
+  // "!KEY" (--unset) removes it: without confinement, no loads; an absent key is refused; a --set
+  // without a value is not an unset; overrides apply in order.
+  EXPECT_TRUE(built(kCase, {"!sample.confinement"}).scene.solid_loads.empty());
+  EXPECT_NE(error_of(kCase, {"!sample.confinment"}).find("--unset sample.confinment: expected a key or table"), std::string::npos);
+  EXPECT_NE(error_of(kCase, {"!damage"}).find("--unset damage"), std::string::npos);
+  EXPECT_NE(error_of(kCase, {"sample.confinement"}).find("expected KEY=VALUE"), std::string::npos);
+  EXPECT_EQ(built(kCase, {"!sample.confinement", "sample.confinement=0.2"}).scene.solid_loads.size(), 4u);
+  EXPECT_TRUE(built(kCase, {"sample.confinement=0.2", "!sample.confinement"}).scene.solid_loads.empty());
+  EXPECT_NE(error_of(kCase, {"case.name=\xc3\xa9"}).find("expected an ASCII TOML value"), std::string::npos);
   EXPECT_NE(error_of(kCase, {"sample.image.file.x=1"}).find("expected a key inside tables"), std::string::npos);
   EXPECT_NE(error_of(kCase, {"sample.confinement=\"a lot\""}).find("expected a number"), std::string::npos);
 }
@@ -191,6 +196,12 @@ TEST(SampleTable, RefusesWhatItCannotBuild) {
   EXPECT_NE(error_of(kCase + "[domain]\nlower = [0.0, 0.0, 0.0]\nupper = [1.0, 1.0, 1.0]\n").find("domain"), std::string::npos);
   EXPECT_NE(error_of(replaced(kCase, "lateral_thickness = 4.0e-8", "lateral_thickness = 3.0e-8")).find("sample.lateral_thickness"),
             std::string::npos);
+  EXPECT_NE(error_of(replaced(kCase, "lateral_thickness = 4.0e-8", "lateral_thickness = 2.0e-8")).find("at least the support radius"),
+            std::string::npos);
+  EXPECT_NE(error_of(replaced(kCase, "reservoir_material", "plate_thickness = 2.0e-7\nreservoir_material")).find("sample.plate_thickness"),
+            std::string::npos);
+  // A crop's upper 0 is the file's end (50 voxels along z: 20 from 30), as the image reader takes it.
+  EXPECT_EQ(built(replaced(kCase, "upper = [32, 36, 50]", "upper = [32, 36, 0]")).scene.count(), 20 * 28 * 28);
   EXPECT_NE(error_of(replaced(kCase, "lateral_material = \"clay\"", "lateral_material = \"plate\"")).find("sample.confinement"),
             std::string::npos);
   EXPECT_NE(error_of(replaced(kCase, "reservoir_material = \"gas\"", "reservoir_material = \"clay\"")).find("sample.reservoir_material"),

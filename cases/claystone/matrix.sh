@@ -8,7 +8,7 @@
 # reduced: the 16 x 24 x 20 voxel crop of the fracture's upper part (reservoirs of 4 voxels),
 #          about 16,000 particles: the size this CPU runs (VALIDATION.md);
 # cell:    the whole 50^3 sample (204,120 particles): a GPU size (add --backend cuda).
-set -eu
+set -euf  # -f: the [..] of the --set values are not file patterns
 out=${1:?usage: matrix.sh OUTDIR [reduced|cell] [poresph] [run options...]}
 size=${2:-reduced}
 poresph=${3:-poresph}
@@ -51,4 +51,9 @@ if [ "$size" = cell ]; then  # Deptulski §5.5: two disconnected pores (the redu
   # shellcheck disable=SC2086
   run pcw_6MPa_two_pores $pcw --set sample.image.file=claystone/claystone_two_pores.npy --set sample.confinement=0.12 "$@"
 fi
-"$poresph" report "$out"/*/ --out "$out/report"
+runs=""
+for d in rigid elastic_6MPa rmc_10MPa rmc_8MPa rmc_6MPa rmc_4MPa pcw_8MPa pcw_6MPa pcw_6MPa_two_pores; do
+  [ -f "$out/$d/monitors.csv" ] && runs="$runs $out/$d"
+done
+# shellcheck disable=SC2086
+"$poresph" report $runs --out "$out/report"

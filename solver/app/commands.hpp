@@ -14,7 +14,7 @@ struct RunOptions {
   std::string live;                    // HOST:PORT of a ParaView GUI for Catalyst Live
   int serve = -1;                      // dashboard port (0: any free one); -1: no dashboard
   std::string bind = "127.0.0.1";      // the dashboard's address
-  std::vector<std::string> sets;       // KEY=VALUE and KEY (--set, --unset; scene/case_file.hpp), in order
+  std::vector<std::string> sets;       // "KEY=VALUE" and "!KEY" (--set, --unset; scene/case_file.hpp), in order
 };
 
 // Exit codes: 0 done, 2 bad input (nothing written), 3 unstable run (diagnostic in log.txt),

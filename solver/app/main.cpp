@@ -8,6 +8,22 @@
 #include "app/commands.hpp"
 #include "app/last_resort.hpp"
 
+namespace {
+
+// --set KEY=VALUE and --unset KEY, kept in the order given (scene/case_file.hpp: "!KEY" unsets).
+void add_case_overrides(CLI::App* cmd, std::vector<std::string>& sets) {
+  cmd->add_option_function<std::vector<std::string>>(
+         "--set", [&sets](const std::vector<std::string>& v) { sets.insert(sets.end(), v.begin(), v.end()); },
+         "KEY=VALUE: override a case value, e.g. sample.confinement=0.16 (repeatable)")
+      ->trigger_on_parse();
+  cmd->add_option_function<std::vector<std::string>>(
+         "--unset", [&sets](const std::vector<std::string>& v) { for (const auto& k : v) sets.push_back("!" + k); },
+         "KEY: remove a case key or table, e.g. damage (repeatable)")
+      ->trigger_on_parse();
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   psph::install_last_resort();
   CLI::App app{"poresph: pore-scale SPH simulation of gas, water and deforming clay"};
@@ -26,10 +42,7 @@ int main(int argc, char** argv) {
                  "principal_stress, displacement, colour) or a .py script; repeatable");
   run->add_option("--live", ro.live, "HOST:PORT of a ParaView GUI to attach with Catalyst Live");
   run->add_option("--serve", ro.serve, "serve the browser dashboard on this port (0: any free port)")->check(CLI::Range(0, 65535));
-  run->add_option("--set", ro.sets, "KEY=VALUE: override a case value, e.g. sample.confinement=0.16 (repeatable)");
-  run->add_option_function<std::vector<std::string>>(
-      "--unset", [&](const std::vector<std::string>& keys) { ro.sets.insert(ro.sets.end(), keys.begin(), keys.end()); },
-      "KEY: remove a case key or table, e.g. damage (repeatable)");
+  add_case_overrides(run, ro.sets);
   run->add_option("--bind", ro.bind, "the dashboard's address (default 127.0.0.1; 0.0.0.0 for every interface)");
 
   int serve_port = 8080;
@@ -52,10 +65,7 @@ int main(int argc, char** argv) {
 
   auto* check = app.add_subcommand("check", "validate a case file, run nothing");
   check->add_option("case", case_path, "case file (TOML)")->required();
-  check->add_option("--set", ro.sets, "KEY=VALUE: override a case value (repeatable)");
-  check->add_option_function<std::vector<std::string>>(
-      "--unset", [&](const std::vector<std::string>& keys) { ro.sets.insert(ro.sets.end(), keys.begin(), keys.end()); },
-      "KEY: remove a case key or table (repeatable)");
+  add_case_overrides(check, ro.sets);
 
   std::vector<std::string> names;
   bool full = false, json = false, quick = false, accuracy = false, stability = false;

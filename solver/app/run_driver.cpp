@@ -352,6 +352,8 @@ nlohmann::json RunDriver::summary(double wall) const {
                       {"wall_seconds", wall},
                       {"particle_steps_per_second", steps * engine_->particles() / std::max(wall, 1e-9)}};
   if (!c_.images.empty()) j["images"] = c_.images;
+  if (c_.stress_scale > 0) j["stress_scale"] = c_.stress_scale;  // physical per case units ([case])
+  j["length_scale"] = c_.length_scale;
   if (two_phase_) {
     const TwoPhaseSample& s = two_phase_->last();
     const double tp = two_phase_->percolation_time();
@@ -362,8 +364,6 @@ nlohmann::json RunDriver::summary(double wall) const {
                       {"porosity", s.porosity},
                       {"capillary_pressure", s.pressure_gas - s.pressure_liquid},
                       {"flow_axis", std::string(1, "xyz"[c_.monitor_region.flow_axis])}};
-    if (c_.stress_scale > 0) j["stress_scale"] = c_.stress_scale;
-    if (c_.length_scale != 1) j["length_scale"] = c_.length_scale;
   }
   return j;
 }

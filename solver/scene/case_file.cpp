@@ -122,7 +122,7 @@ namespace {
 
 // A dotted key of letters, digits, '_' and '-'.
 bool valid_dotted_key(const std::string& key) {
-  return !key.empty() && key.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.") == std::string::npos &&
+  return !key.empty() && key.front() != '-' && key.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-.") == std::string::npos &&
          key.front() != '.' && key.back() != '.' && key.find("..") == std::string::npos;
 }
 
@@ -139,14 +139,22 @@ void apply_unset(toml::table& tbl, const std::string& key, const std::string& fi
   t->erase(key.substr(start));
 }
 
-// "KEY=VALUE" into `tbl`, or "KEY" out of it (load_case_text's sets).
+// "KEY=VALUE" into `tbl`, or "!KEY" out of it (load_case_text's sets).
 void apply_set(toml::table& tbl, const std::string& set, const std::string& file) {
+  if (!set.empty() && set[0] == '!') {
+    if (!valid_dotted_key(set.substr(1)))
+      throw CaseError(file + ": --unset " + shown(set.substr(1)) + ": expected a dotted key of letters, digits, '_' and '-'");
+    return apply_unset(tbl, set.substr(1), file);
+  }
   const std::size_t eq = set.find('=');
-  if (eq == std::string::npos && valid_dotted_key(set)) return apply_unset(tbl, set, file);
   const std::string key = eq == std::string::npos ? "" : set.substr(0, eq), text = eq == std::string::npos ? "" : set.substr(eq + 1);
   if (!valid_dotted_key(key) || text.empty() || text.size() > 4096)
     throw CaseError(file + ": --set " + shown(set) + ": expected KEY=VALUE with a dotted key of letters, digits, '_' "
                     "and '-' (e.g. sample.confinement=0.16)");
+  const TextScan scan = scan_case_text("v = " + text);  // what a case file's text must pass, too
+  if (scan.bad_line || scan.deepest > kMaxNesting)
+    throw CaseError(file + ": --set " + shown(set) + ": expected an ASCII TOML value nested at most " +
+                    std::to_string(kMaxNesting) + " deep");
   toml::table value;
   try {
     value = toml::parse("v = " + text);

@@ -61,7 +61,7 @@ struct Case {
 Case parse_case(const toml::table& tbl, const std::string& file);
 // `sets`: overrides applied to the file's table before it is read (poresph run --set, --unset):
 // "KEY=VALUE", KEY dotted (sample.confinement), VALUE a TOML value (0.16, "gas", [1, 2]) or else a
-// string; "KEY" alone (--unset) removes that key or table, which must be there.
+// string; "!KEY" (--unset) removes that key or table, which must be there; in the order given.
 Case load_case_file(const std::string& path, const std::vector<std::string>& sets = {});
 Case load_case_text(const std::string& text, const std::string& file, const std::vector<std::string>& sets = {});
 

@@ -25,24 +25,29 @@ Vec3 per_axis(CaseReader& r, const std::string& key, int D, double def) {
 
 // The image's voxels along x, y, z as the case will hold them: the crop, or the file's own size.
 std::array<long, 3> file_voxels(CaseReader& r, const std::string& case_file) {
+  std::array<long, 3> lo{0, 0, 0}, hi{0, 0, 0};
   if (r.has("crop")) {
     CaseReader c(r.table("crop", true), case_file, r.qualified("crop"));
-    const auto lo = c.vec<long>("lower", 3), hi = c.vec<long>("upper", 3);
-    return {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+    lo = c.vec<long>("lower", 3), hi = c.vec<long>("upper", 3);
+    if (hi[0] > 0 && hi[1] > 0 && hi[2] > 0) return {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
   }
-  if (r.has("dimensions")) return r.vec<long>("dimensions", 3);
-  std::vector<std::string> tried;
-  const std::string found = find_image_file(r.string("file"), case_file, tried);
-  if (found.empty()) r.fail("file", "expected an image file: \"" + shown(r.string("file")) + "\" is not found");
-  try {
-    const auto src = open_volume(found, r.string("format", "auto") == "auto" ? format_of(found) : r.string("format"),
-                                 nullptr, r.integer("first_page", 0));
-    std::array<long, 3> n{1, 1, 1};
-    for (int s = 0; s < 3; ++s) n[std::size_t(src->storage_axes()[std::size_t(s)])] = src->size()[std::size_t(s)];
-    return n;
-  } catch (const ImageError& e) {
-    r.fail("file", e.what());
+  std::array<long, 3> n{1, 1, 1};
+  if (r.has("dimensions")) {
+    n = r.vec<long>("dimensions", 3);
+  } else {
+    std::vector<std::string> tried;
+    const std::string found = find_image_file(r.string("file"), case_file, tried);
+    if (found.empty()) r.fail("file", "expected an image file: \"" + shown(r.string("file")) + "\" is not found");
+    try {
+      const auto src = open_volume(found, r.string("format", "auto") == "auto" ? format_of(found) : r.string("format"),
+                                   nullptr, r.integer("first_page", 0));
+      for (int s = 0; s < 3; ++s) n[std::size_t(src->storage_axes()[std::size_t(s)])] = src->size()[std::size_t(s)];
+    } catch (const ImageError& e) {
+      r.fail("file", e.what());
+    }
   }
+  for (int k = 0; k < 3; ++k) n[std::size_t(k)] = (hi[std::size_t(k)] > 0 ? hi[std::size_t(k)] : n[std::size_t(k)]) - lo[std::size_t(k)];
+  return n;  // the crop's upper 0: to the file's end, as the image reader takes it
 }
 
 toml::array array_of(const Vec3& v, int D) {
@@ -180,7 +185,9 @@ bool expand_sample(toml::table& tbl, const std::string& file) {
   c.lateral = r.positive("lateral_thickness");
   // Two support radii (at least four spacings) of empty space beyond the lateral faces: a face that
   // the pore water pushes out by half a spacing would otherwise leave the domain and stop the run.
-  const double support = tbl["discretisation"]["support_radius"].value_or(2 * *spacing);
+  const std::string kernel = tbl["discretisation"]["kernel"].value_or(std::string("cubic_spline"));
+  const double support = tbl["discretisation"]["support_radius"].value_or(
+      tbl["discretisation"]["smoothing_length"].value_or(*spacing) * (kernel == "quintic_spline" ? 3 : 2));
   c.margin = std::max(4.0, std::ceil(2 * support / *spacing - 1e-9)) * *spacing;
   c.reservoir = r.positive("reservoir_height");
   const double plate_thickness = r.positive("plate_thickness", *spacing);
@@ -188,6 +195,9 @@ bool expand_sample(toml::table& tbl, const std::string& file) {
   const double drive_ramp = r.non_negative("drive_ramp", 0.0), conf_ramp = r.non_negative("confinement_ramp", 0.0);
   if (sigma > 0 && kind_of(tbl, lateral) != "elastic")
     r.fail("confinement", "expected an elastic lateral_material to carry it (\"" + shown(lateral) + "\" is a wall)");
+  if (c.lateral < support * (1 - 1e-9))
+    r.fail("lateral_thickness", "expected at least the support radius (" + CaseReader::fmt(support) + " m): the layer "
+                                "keeps the fluids from the empty margin beyond it, got " + CaseReader::fmt(c.lateral));
   for (const auto& [key, v] : std::array<std::pair<const char*, double>, 2>{{{"lateral_thickness", c.lateral}, {"reservoir_height", c.reservoir}}})
     if (v < *spacing * (1 - 1e-9) || std::fabs(v / *spacing - std::round(v / *spacing)) > 1e-6 * v / *spacing)
       r.fail(key, "expected a whole number of spacings (" + CaseReader::fmt(*spacing) + " m), got " + CaseReader::fmt(v));
@@ -207,6 +217,10 @@ bool expand_sample(toml::table& tbl, const std::string& file) {
   }
   const double cv = voxel[std::size_t(c.axis)] * coarsen[std::size_t(c.axis)];
   c.plate = std::ceil(plate_thickness / cv - 1e-9) * cv;
+  if (!(2 * c.plate < c.sample[std::size_t(c.axis)] * (1 - 1e-9)))
+    r.fail("plate_thickness", "expected two plates thinner than half the sample along the flow axis (" +
+                                  CaseReader::fmt(c.sample[std::size_t(c.axis)]) + " m), got " + CaseReader::fmt(c.plate) + " each");
+  const auto percolation_distance = r.has("percolation_distance") ? r.positive("percolation_distance") : 0.0;
   r.finish();
 
   // Moved, not copied: toml++ keeps a node's source (its line, which the image's label order and
@@ -224,6 +238,7 @@ bool expand_sample(toml::table& tbl, const std::string& file) {
   for (int k = 0; k < 3; ++k) hi[std::size_t(k)] = c.origin[std::size_t(k)] + c.sample[std::size_t(k)];
   toml::table monitors{{"region_lower", array_of(c.origin, c.D)}, {"region_upper", array_of(hi, c.D)},
                        {"flow_axis", std::string(1, "xyz"[c.axis])}};
+  if (percolation_distance > 0) monitors.insert("percolation_distance", percolation_distance);
   tbl.erase("sample");
   tbl.insert_or_assign("domain", domain);
   tbl.insert_or_assign("monitors", monitors);
