@@ -15,49 +15,12 @@
 #include "scene/case_tables.hpp"
 #include "scene/image_path.hpp"
 #include "scene/image_shape.hpp"
+#include "scene/open_image.hpp"
 
 namespace psph {
 namespace {
 
 constexpr double kMaxCoarseVoxels = 2147483647.0;  // the components' labels are 32-bit
-
-// The volume as the file is, with the raw keys checked against the format.
-std::unique_ptr<VolumeSource> open_image(CaseReader& r, const CaseDraft& d, std::string& format, std::string& file) {
-  file = r.string("file");
-  std::vector<std::string> tried;
-  const std::string found = find_image_file(file, d.file, tried);
-  if (found.empty()) {
-    std::string list;
-    for (const std::string& t : tried) list += (list.empty() ? "" : ", ") + t;
-    r.fail("file", "expected an image file: \"" + shown(file) + "\" is at none of " + list +
-                       " (a relative path: next to the case file, then in PORESPH_IMAGE_PATH's folders)");
-  }
-  file = found;
-  format = r.choice("format", {"auto", "raw", "tiff", "npy"}, "auto");
-  if (format == "auto") format = format_of(file);
-  for (const char* key : {"dimensions", "voxel_type", "byte_order", "header_bytes", "order"})
-    if (format != "raw" && r.has(key)) r.fail(key, "expected format = \"raw\" for it to apply to (the file is " + format + ")");
-  if (format != "tiff" && r.has("first_page")) r.fail("first_page", "expected a TIFF series for it to apply to");
-  RawSpec raw;
-  if (format == "raw") {
-    raw.dimensions = r.vec<long>("dimensions", 3);
-    for (long n : raw.dimensions)
-      if (n < 1) r.fail("dimensions", "expected at least 1 voxel along each axis");
-    if (!parse_voxel_type(r.choice("voxel_type", {"uint8", "int8", "uint16", "int16", "uint32", "int32", "float32"}, "uint8"),
-                          raw.type))
-      r.fail("voxel_type", "expected a voxel type");
-    raw.big_endian = r.choice("byte_order", {"little", "big"}, "little") == "big";
-    raw.header_bytes = r.integer("header_bytes", 0);
-    if (raw.header_bytes < 0) r.fail("header_bytes", "expected a byte count >= 0");
-    raw.order = r.choice("order", {"xyz", "xzy", "yxz", "yzx", "zxy", "zyx"}, "xyz");
-  }
-  const long first = r.integer("first_page", 0);
-  try {
-    return open_volume(file, format, &raw, first);
-  } catch (const ImageError& e) {
-    r.fail(e.topic().empty() ? "file" : e.topic(), e.what());
-  }
-}
 
 // labels = { "0" = "water", "1..3" = "clay" }: each phase is a material (or "empty"), in the order
 // the map first names them.
@@ -324,9 +287,47 @@ void add_inclusions(CaseReader& r, CaseDraft& d, const std::shared_ptr<ImageGrid
 
 }  // namespace
 
+// The volume as the file is, with the raw keys checked against the format (scene/open_image.hpp).
+std::unique_ptr<VolumeSource> open_image(CaseReader& r, const std::string& case_file, std::string& format, std::string& file) {
+  file = r.string("file");
+  std::vector<std::string> tried;
+  const std::string found = find_image_file(file, case_file, tried);
+  if (found.empty()) {
+    std::string list;
+    for (const std::string& t : tried) list += (list.empty() ? "" : ", ") + t;
+    r.fail("file", "expected an image file: \"" + shown(file) + "\" is at none of " + list +
+                       " (a relative path: next to the case file, then in PORESPH_IMAGE_PATH's folders)");
+  }
+  file = found;
+  format = r.choice("format", {"auto", "raw", "tiff", "npy"}, "auto");
+  if (format == "auto") format = format_of(file);
+  for (const char* key : {"dimensions", "voxel_type", "byte_order", "header_bytes", "order"})
+    if (format != "raw" && r.has(key)) r.fail(key, "expected format = \"raw\" for it to apply to (the file is " + format + ")");
+  if (format != "tiff" && r.has("first_page")) r.fail("first_page", "expected a TIFF series for it to apply to");
+  RawSpec raw;
+  if (format == "raw") {
+    raw.dimensions = r.vec<long>("dimensions", 3);
+    for (long n : raw.dimensions)
+      if (n < 1) r.fail("dimensions", "expected at least 1 voxel along each axis");
+    if (!parse_voxel_type(r.choice("voxel_type", {"uint8", "int8", "uint16", "int16", "uint32", "int32", "float32"}, "uint8"),
+                          raw.type))
+      r.fail("voxel_type", "expected a voxel type");
+    raw.big_endian = r.choice("byte_order", {"little", "big"}, "little") == "big";
+    raw.header_bytes = r.integer("header_bytes", 0);
+    if (raw.header_bytes < 0) r.fail("header_bytes", "expected a byte count >= 0");
+    raw.order = r.choice("order", {"xyz", "xzy", "yxz", "yzx", "zxy", "zyx"}, "xyz");
+  }
+  const long first = r.integer("first_page", 0);
+  try {
+    return open_volume(file, format, &raw, first);
+  } catch (const ImageError& e) {
+    r.fail(e.topic().empty() ? "file" : e.topic(), e.what());
+  }
+}
+
 void read_image_geometry(CaseReader& r, CaseDraft& d, std::size_t index) {
   std::string format, file;
-  auto src = open_image(r, d, format, file);
+  auto src = open_image(r, d.file, format, file);
   d.image_files.emplace_back(index, file);
   PhaseSpec spec;
   Phases ph = read_labels(r, d, spec);

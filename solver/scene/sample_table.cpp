@@ -4,10 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "image/image_error.hpp"
-#include "image/volume_source.hpp"
 #include "scene/case_reader.hpp"
-#include "scene/image_path.hpp"
+#include "scene/open_image.hpp"
 
 namespace psph {
 namespace {
@@ -23,7 +21,8 @@ Vec3 per_axis(CaseReader& r, const std::string& key, int D, double def) {
   return v;
 }
 
-// The image's voxels along x, y, z as the case will hold them: the crop, or the file's own size.
+// The image's voxels along x, y, z as the case will hold them: the crop, or the file's own size
+// (the crop's upper 0: to the file's end, as the image reader takes it).
 std::array<long, 3> file_voxels(CaseReader& r, const std::string& case_file) {
   std::array<long, 3> lo{0, 0, 0}, hi{0, 0, 0};
   if (r.has("crop")) {
@@ -31,23 +30,12 @@ std::array<long, 3> file_voxels(CaseReader& r, const std::string& case_file) {
     lo = c.vec<long>("lower", 3), hi = c.vec<long>("upper", 3);
     if (hi[0] > 0 && hi[1] > 0 && hi[2] > 0) return {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
   }
+  std::string format, found;
+  const auto src = open_image(r, case_file, format, found);  // the image reader's own, on the same keys
   std::array<long, 3> n{1, 1, 1};
-  if (r.has("dimensions")) {
-    n = r.vec<long>("dimensions", 3);
-  } else {
-    std::vector<std::string> tried;
-    const std::string found = find_image_file(r.string("file"), case_file, tried);
-    if (found.empty()) r.fail("file", "expected an image file: \"" + shown(r.string("file")) + "\" is not found");
-    try {
-      const auto src = open_volume(found, r.string("format", "auto") == "auto" ? format_of(found) : r.string("format"),
-                                   nullptr, r.integer("first_page", 0));
-      for (int s = 0; s < 3; ++s) n[std::size_t(src->storage_axes()[std::size_t(s)])] = src->size()[std::size_t(s)];
-    } catch (const ImageError& e) {
-      r.fail("file", e.what());
-    }
-  }
+  for (int s = 0; s < 3; ++s) n[std::size_t(src->storage_axes()[std::size_t(s)])] = src->size()[std::size_t(s)];
   for (int k = 0; k < 3; ++k) n[std::size_t(k)] = (hi[std::size_t(k)] > 0 ? hi[std::size_t(k)] : n[std::size_t(k)]) - lo[std::size_t(k)];
-  return n;  // the crop's upper 0: to the file's end, as the image reader takes it
+  return n;
 }
 
 toml::array array_of(const Vec3& v, int D) {
@@ -60,7 +48,7 @@ toml::table box(const Vec3& lo, const Vec3& hi, int D) {
   return toml::table{{"lower", array_of(lo, D)}, {"upper", array_of(hi, D)}};
 }
 
-// A material's kind and density as the file states them ("" and 0 when it does not).
+// A material's kind as the file states it ("" when it does not).
 std::string kind_of(const toml::table& tbl, const std::string& name) {
   return tbl["materials"][name]["kind"].value_or(std::string());
 }
@@ -161,8 +149,9 @@ toml::array confinement(const Cell& c, const std::string& lateral, double sigma,
 
 bool expand_sample(toml::table& tbl, const std::string& file) {
   if (!tbl.contains("sample")) return false;
-  CaseReader top(tbl, file, "");
-  CaseReader r(top.table("sample", true), file, "sample");
+  const toml::table* sample = tbl["sample"].as_table();
+  if (!sample) throw CaseError(file + ": sample" + toml_line_of(*tbl.get("sample")) + ": expected a table");
+  CaseReader r(*sample, file, "sample");
   for (const char* t : {"domain", "monitors", "body_force_region", "solid_load"})
     if (tbl.contains(t))
       throw CaseError(file + ": " + t + toml_line_of(*tbl.get(t)) + ": expected it from [sample] alone: the sample makes "
