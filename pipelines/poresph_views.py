@@ -87,8 +87,8 @@ def _lut(field, s, categorical=None, above_range=None):
     return lut
 
 
-def _colour(display, view, field, component, lut, s):
-    if field not in display.Input.PointData.keys():
+def _colour(display, view, field, component, lut, s, has_field):
+    if not has_field:
         # The case has no such field (its physics is not active): plain grey particles.
         ColorBy(display, None)
         display.AmbientColor = display.DiffuseColor = [0.7, 0.7, 0.7]
@@ -116,6 +116,16 @@ def _colour(display, view, field, component, lut, s):
         bar.TitleFontSize = bar.LabelFontSize = max(8, min(16, s["image_size"][1] // 38))  # 16 at 600 px
 
 
+def _phase_colours(display):
+    """The phases' colours (PHASES), without a scalar bar: the context of a solid field."""
+    lut = GetColorTransferFunction("phase_context")
+    lut.InterpretValuesAsCategories = 1
+    lut.Annotations = [str(x) for pair in PHASES for x in (pair[0], pair[1])]
+    lut.IndexedColors = [c for pair in PHASES for c in pair[2]]
+    ColorBy(display, ("POINTS", "phase"))
+    display.LookupTable = lut
+
+
 def _png(view, name, prefix, s):
     png = CreateExtractor("PNG", view, registrationName="%s_%s_png" % (name, prefix))
     png.Writer.FileName = prefix + "_{timestep:06d}.png"
@@ -139,27 +149,56 @@ def slab(source, s):
     return cut
 
 
-def field_pipeline(name, field, component=None, categorical=None, above_range=None):
+def _phases_between(source, lo, hi, name, invert=False):
+    t = Threshold(registrationName=name, Input=source)
+    t.Scalars = ["POINTS", "phase"]
+    t.LowerThreshold = lo
+    t.UpperThreshold = hi
+    t.ThresholdMethod = "Between"
+    t.Invert = 1 if invert else 0
+    return t
+
+
+def field_pipeline(name, field, component=None, categorical=None, above_range=None, solid_field=False,
+                   shown_above=None):
     """A pipeline colouring the particles by `field` (a component of it when given) in a 3D view
     and a slab view. `categorical`: [(value, label, [r, g, b]), ...] for an indexed colour map.
+    `solid_field`: a field of the elastic solid (damage, its stress, its displacement): only the
+    solid takes the field's colours, the other particles their phase's (Pazdniakou 2018 Fig. 11),
+    and the 3D view shows the solid alone; `shown_above`: only where the field exceeds it (the
+    damaged points, D > 1e-3, Pazdniakou's count), so that the undamaged solid hides nothing.
     Returns the catalyst Options the script must expose as `options`."""
     s = settings()
     particles = TrivialProducer(registrationName="particles")
     lut = _lut(field, s, categorical, above_range)
+    has_phase = "phase" in particles.PointData.keys()
+    has_field = field in particles.PointData.keys()  # asked of the input: a threshold's output may be empty
+    solid_field = solid_field and has_phase
     shown = particles
-    if s["dimension"] == 3 and not s.get("show_walls", False) and "phase" in particles.PointData.keys():
+    if solid_field:
+        shown = _phases_between(particles, 2.5, 3.5, "solid")
+        if shown_above is not None and s["dimension"] == 3 and has_field:
+            above = Threshold(registrationName="above", Input=shown)
+            above.Scalars = ["POINTS", field]
+            above.LowerThreshold = shown_above
+            above.UpperThreshold = 1e300
+            above.ThresholdMethod = "Between"
+            shown = above
+    elif s["dimension"] == 3 and not s.get("show_walls", False) and has_phase:
         # Walls would hide the inside of a closed domain in 3D; the slab shows them.
-        shown = Threshold(registrationName="not_walls", Input=particles)
-        shown.Scalars = ["POINTS", "phase"]
-        shown.LowerThreshold = 0.5
-        shown.UpperThreshold = 100.0
-        shown.ThresholdMethod = "Between"
-    views = [("3d", shown, s["camera"])]
+        shown = _phases_between(particles, 0.5, 100.0, "not_walls")
+    views = [("3d", shown, s["camera"], None)]
     if s["dimension"] == 3:
-        views.append(("slab", slab(particles, s), s["slab"]["camera"]))
-    for prefix, source, cam in views:
+        cut = slab(particles, s)
+        views.append(("slab", _phases_between(cut, 2.5, 3.5, "slab_solid") if solid_field else cut, s["slab"]["camera"],
+                      _phases_between(cut, 2.5, 3.5, "slab_others", invert=True) if solid_field else None))
+    elif solid_field:  # 2D: the whole plane is the section
+        views[0] = ("3d", shown, s["camera"], _phases_between(particles, 2.5, 3.5, "others", invert=True))
+    for prefix, source, cam, others in views:
         view = _view(s, cam)
-        _colour(_particles_display(source, view, s), view, field, component, lut, s)
+        _colour(_particles_display(source, view, s), view, field, component, lut, s, has_field)
+        if others is not None:
+            _phase_colours(_particles_display(others, view, s))
         _png(view, name, prefix, s)
     if s["dimension"] == 3 and s.get("slab_extract", True) and not _state["slab_extract_taken"]:
         _state["slab_extract_taken"] = True  # one slab extract per run, whichever pipeline comes first

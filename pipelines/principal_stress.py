@@ -7,4 +7,4 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from poresph_views import catalyst_execute, field_pipeline  # noqa: E402,F401 (Catalyst calls catalyst_execute)
 
-options = field_pipeline("principal_stress", "principal_stress", component="X")
+options = field_pipeline("principal_stress", "principal_stress", component="X", solid_field=True)

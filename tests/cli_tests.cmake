@@ -160,6 +160,15 @@ file(READ ${WORK}/drain_run/log.txt log)
 if(NOT log MATCHES "gas percolates")
   message(FATAL_ERROR "log.txt does not report the percolation: ${log}")
 endif()
+# time.after_percolation ends the run that long after percolation (here 0.5 ms after t = 0).
+execute_process(COMMAND ${PORESPH} run ${WORK}/drain.toml --out ${WORK}/drain_after --quiet --set time.after_percolation=5e-4
+                RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE err)
+file(READ ${WORK}/drain_after/summary.json summary)
+file(STRINGS ${WORK}/drain_after/monitors.csv mon)
+list(GET mon -1 last)
+if(NOT rc EQUAL 0 OR NOT summary MATCHES "\"end_time\": 0.0005" OR NOT last MATCHES "^[0-9]+,0.0005,")
+  message(FATAL_ERROR "time.after_percolation = 5e-4 did not end the run at 0.5 ms (exit ${rc}): ${last}\n${summary}${o}${err}")
+endif()
 
 # A rigid body's trajectory is in monitors.csv: the top falls under gravity from z = 0.01 m at
 # 0.05 m/s upwards, so its last row (t = 0.01 s) has z = 0.01 + 0.05 t - 9.81 t^2 / 2 = 0.0100095.

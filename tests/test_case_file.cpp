@@ -124,6 +124,7 @@ TEST(CaseFile, KeysWithoutEffectAreRefused) {
   expect_error(with("[interface]\nnormal_threshold = 0.02"), {"interface.normal_threshold", "surface_tension > 0"});
   expect_error(with("[interface]\nwetting = \"wall_colour\""), {"interface.wetting", "surface_tension > 0"});
   expect_error(with("[monitors]\nflow_axis = \"x\""), {"monitors.flow_axis", "a liquid and a gas"});
+  expect_error(replaced(water, "[time]", "[time]\nafter_percolation = 0.1"), {"time.after_percolation", "a liquid and a gas"});
   expect_error(replaced(water, "sound_speed = 0.01", "sound_speed = 0.01\ntait_gamma = 7.0"),
                {"materials.water.tait_gamma", "equation_of_state = \"tait\""});
   // Without a fluid, the fluid's methods have nothing to act on.

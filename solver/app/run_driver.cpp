@@ -286,10 +286,13 @@ void RunDriver::monitor() {
   const std::vector<double> values = two_phase_->sample(*engine_);
   for (std::size_t k = 0; k < names.size(); ++k) row.push_back({names[k], values[k]});
   rd_->monitor(*engine_, row);
-  if (!before && two_phase_->percolation_time() >= 0)
-    log("gas percolates (joins the inlet and outlet of the monitor region) at t = " +
-        std::to_string(two_phase_->percolation_time()) + " s, gas saturation " +
-        std::to_string(two_phase_->last().saturation_gas));
+  if (before || two_phase_->percolation_time() < 0) return;
+  log("gas percolates (joins the inlet and outlet of the monitor region) at t = " +
+      std::to_string(two_phase_->percolation_time()) + " s, gas saturation " +
+      std::to_string(two_phase_->last().saturation_gas));
+  if (c_.after_percolation < 0) return;
+  c_.end_time = std::min(c_.end_time, std::max(engine_->time(), two_phase_->percolation_time() + c_.after_percolation));
+  log("the run ends at t = " + std::to_string(c_.end_time) + " s (time.after_percolation)");
 }
 
 void RunDriver::checkpoint() {

@@ -49,6 +49,7 @@ struct Case {
   Scene scene;       // domain, materials, options (particles filled by the scene builder)
   std::vector<GeometryShape> geometry;
   double end_time = 0;
+  double after_percolation = -1;  // [time] after_percolation: the run ends this long after gas percolates (< 0: at end_time)
   OutputOptions output;
   bool two_phase = false;  // a liquid and a gas: the two-phase monitors run (monitors/two_phase.hpp)
   MonitorRegion monitor_region;

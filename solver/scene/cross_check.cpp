@@ -64,6 +64,7 @@ void check_fluid_keys(const CaseDraft& d) {
   for (const char* key : {"region_lower", "region_upper", "flow_axis", "percolation_distance"})
     d.refuse_unless(d.c.two_phase, std::string("monitors.") + key,
                     "a case with a liquid and a gas (the monitors region is the two-phase monitors')");
+  d.refuse_unless(d.c.two_phase, "time.after_percolation", "a case with a liquid and a gas (percolation is the gas')");
 }
 
 TimeStepInputs step_inputs(const CaseDraft& d, const std::vector<Material>& props) {

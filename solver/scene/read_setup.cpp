@@ -99,8 +99,11 @@ void read_discretisation(CaseReader& top, CaseDraft& d) {
 void read_time_and_output(CaseReader& top, CaseDraft& d) {
   Case& c = d.c;
   {
-    CaseReader r(top.table("time", true), d.file, "time");
+    const toml::table& t = top.table("time", true);
+    d.note(t, "time");
+    CaseReader r(t, d.file, "time");
     c.end_time = r.positive("end");
+    c.after_percolation = r.has("after_percolation") ? r.non_negative("after_percolation", 0.0) : -1.0;
     r.finish();
   }
   CaseReader r(top.table("output", false), d.file, "output");

@@ -30,8 +30,8 @@ ClaystoneDrainage run_claystone_drainage(const Case& c, const std::string& backe
   const auto t0 = std::chrono::steady_clock::now();
   auto engine = make_engine(c.scene, backend);
   TwoPhaseMonitor two_phase(c.scene, c.monitor_region, c.stress_scale);
-  long elastic = 0;  // the damageable particles
-  for (int m : c.scene.material) elastic += c.scene.materials[std::size_t(m)].props.kind == MaterialKind::Elastic;
+  long damageable = 0;  // the clay's particles (the lateral layers do not damage)
+  for (int m : c.scene.material) damageable += c.scene.options.damages(m);
   ClaystoneDrainage out;
   out.image_porosity = c.images.at(0).at("coarse_porosity").get<double>();
   const double interval = c.output.monitor_interval > 0 ? c.output.monitor_interval : c.end_time / 100;
@@ -43,7 +43,7 @@ ClaystoneDrainage run_claystone_drainage(const Case& c, const std::string& backe
     out.porosity_end = s.porosity, out.saturation_gas_end = s.saturation_gas;
     out.worst_saturation_sum = std::max(out.worst_saturation_sum, std::fabs(s.saturation_liquid + s.saturation_gas - 1));
     out.damaged_end = monitor(stages, "damaged_particles"), out.total_damage_end = monitor(stages, "total_damage");
-    out.worst_damage_ratio = std::max(out.worst_damage_ratio, out.total_damage_end / double(elastic));
+    out.worst_damage_ratio = std::max(out.worst_damage_ratio, out.total_damage_end / double(std::max(damageable, 1L)));
     if (t >= c.end_time || (stop_at_percolation && two_phase.percolation_time() >= 0)) break;
     t = std::min(c.end_time, t + interval);
     engine->run_until(t);
