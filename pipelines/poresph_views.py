@@ -17,6 +17,7 @@ from paraview.simple import (Calculator, ColorBy, CreateExtractor, CreateView, E
 _state = {"live_taken": False, "slab_extract_taken": False, "time_labels": []}
 
 # The `phase` field (solver/state/derived_fields.hpp): value, label, colour.
+SOLID = 3  # the elastic solid's value of the phase field (PHASES)
 PHASES = [(0, "wall", [0.55, 0.55, 0.55]), (1, "water", [0.12, 0.47, 0.85]), (2, "gas", [0.98, 0.85, 0.25]),
           (3, "solid", [0.62, 0.42, 0.25]), (4, "rigid", [0.2, 0.2, 0.2])]
 
@@ -70,14 +71,18 @@ def _particles_display(source, view, s):
     return d
 
 
+def _categories(lut, categorical):
+    lut.InterpretValuesAsCategories = 1
+    lut.Annotations = [str(x) for pair in categorical for x in (pair[0], pair[1])]
+    lut.IndexedColors = [c for pair in categorical for c in pair[2]]
+    return lut
+
+
 def _lut(field, s, categorical=None, above_range=None):
     lut = GetColorTransferFunction(field)
     lut.AutomaticRescaleRangeMode = "Never"  # ranges stay fixed over a run
     if categorical:
-        lut.InterpretValuesAsCategories = 1
-        lut.Annotations = [str(x) for pair in categorical for x in (pair[0], pair[1])]
-        lut.IndexedColors = [c for pair in categorical for c in pair[2]]
-        return lut
+        return _categories(lut, categorical)
     lut.ApplyPreset(s["colour_maps"].get(field, "Viridis (matplotlib)"), True)
     lo, hi = s["ranges"][field]
     lut.RescaleTransferFunction(lo, hi)
@@ -118,12 +123,8 @@ def _colour(display, view, field, component, lut, s, has_field):
 
 def _phase_colours(display):
     """The phases' colours (PHASES), without a scalar bar: the context of a solid field."""
-    lut = GetColorTransferFunction("phase_context")
-    lut.InterpretValuesAsCategories = 1
-    lut.Annotations = [str(x) for pair in PHASES for x in (pair[0], pair[1])]
-    lut.IndexedColors = [c for pair in PHASES for c in pair[2]]
     ColorBy(display, ("POINTS", "phase"))
-    display.LookupTable = lut
+    display.LookupTable = _categories(GetColorTransferFunction("phase_context"), PHASES)
 
 
 def _png(view, name, prefix, s):
@@ -141,22 +142,23 @@ def slab(source, s):
     dist.ResultArrayName = "slab_distance"
     dist.Function = "abs((coordsX-(%r))*(%r)+(coordsY-(%r))*(%r)+(coordsZ-(%r))*(%r))" % (
         o[0], n[0], o[1], n[1], o[2], n[2])
-    cut = Threshold(registrationName="slab", Input=dist)
-    cut.Scalars = ["POINTS", "slab_distance"]
-    cut.LowerThreshold = 0.0
-    cut.UpperThreshold = h
-    cut.ThresholdMethod = "Between"
-    return cut
+    return _between(dist, "slab_distance", 0.0, h, "slab")
 
 
-def _phases_between(source, lo, hi, name, invert=False):
+def _between(source, array, lo, hi, name, invert=False):
+    """The particles whose `array` lies in [lo, hi] (outside it with `invert`)."""
     t = Threshold(registrationName=name, Input=source)
-    t.Scalars = ["POINTS", "phase"]
+    t.Scalars = ["POINTS", array]
     t.LowerThreshold = lo
     t.UpperThreshold = hi
     t.ThresholdMethod = "Between"
     t.Invert = 1 if invert else 0
     return t
+
+
+def _solid(source, name, others=False):
+    """The elastic solid's particles (the others with `others`)."""
+    return _between(source, "phase", SOLID - 0.5, SOLID + 0.5, name, invert=others)
 
 
 def field_pipeline(name, field, component=None, categorical=None, above_range=None, solid_field=False,
@@ -176,24 +178,21 @@ def field_pipeline(name, field, component=None, categorical=None, above_range=No
     solid_field = solid_field and has_phase
     shown = particles
     if solid_field:
-        shown = _phases_between(particles, 2.5, 3.5, "solid")
+        shown = _solid(particles, "solid")
         if shown_above is not None and s["dimension"] == 3 and has_field:
-            above = Threshold(registrationName="above", Input=shown)
-            above.Scalars = ["POINTS", field]
-            above.LowerThreshold = shown_above
-            above.UpperThreshold = 1e300
-            above.ThresholdMethod = "Between"
-            shown = above
+            shown = _between(shown, field, shown_above, 1e300, "above")
     elif s["dimension"] == 3 and not s.get("show_walls", False) and has_phase:
         # Walls would hide the inside of a closed domain in 3D; the slab shows them.
-        shown = _phases_between(particles, 0.5, 100.0, "not_walls")
+        shown = _between(particles, "phase", 0.5, 100.0, "not_walls")
     views = [("3d", shown, s["camera"], None)]
     if s["dimension"] == 3:
         cut = slab(particles, s)
-        views.append(("slab", _phases_between(cut, 2.5, 3.5, "slab_solid") if solid_field else cut, s["slab"]["camera"],
-                      _phases_between(cut, 2.5, 3.5, "slab_others", invert=True) if solid_field else None))
+        if solid_field:
+            views.append(("slab", _solid(cut, "slab_solid"), s["slab"]["camera"], _solid(cut, "slab_others", True)))
+        else:
+            views.append(("slab", cut, s["slab"]["camera"], None))
     elif solid_field:  # 2D: the whole plane is the section
-        views[0] = ("3d", shown, s["camera"], _phases_between(particles, 2.5, 3.5, "others", invert=True))
+        views[0] = ("3d", shown, s["camera"], _solid(particles, "others", True))
     for prefix, source, cam, others in views:
         view = _view(s, cam)
         _colour(_particles_display(source, view, s), view, field, component, lut, s, has_field)
@@ -202,7 +201,7 @@ def field_pipeline(name, field, component=None, categorical=None, above_range=No
         _png(view, name, prefix, s)
     if s["dimension"] == 3 and s.get("slab_extract", True) and not _state["slab_extract_taken"]:
         _state["slab_extract_taken"] = True  # one slab extract per run, whichever pipeline comes first
-        vtp = CreateExtractor("VTP", ExtractSurface(Input=views[1][1]), registrationName="slab_vtp")
+        vtp = CreateExtractor("VTP", ExtractSurface(Input=cut), registrationName="slab_vtp")  # every phase
         vtp.Writer.FileName = os.path.join(s["extracts_dir"], "slab_{timestep:06d}.pvtp")
 
     return live_options(s, os.path.join(s["images_dir"], name))

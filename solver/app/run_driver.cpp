@@ -292,6 +292,7 @@ void RunDriver::monitor() {
       std::to_string(two_phase_->last().saturation_gas));
   if (c_.after_percolation < 0) return;
   c_.end_time = std::min(c_.end_time, std::max(engine_->time(), two_phase_->percolation_time() + c_.after_percolation));
+  supervision_->set_end_time(c_.end_time);
   log("the run ends at t = " + std::to_string(c_.end_time) + " s (time.after_percolation)");
 }
 

@@ -35,6 +35,9 @@ struct CaseDraft {
   int material(CaseReader& r, const std::string& key, MaterialKind kind, const std::string& what) const;
 };
 
+// A [discretisation] kernel name as its KernelType (scene/read_setup.cpp; unknown: the cubic spline).
+KernelType kernel_from(const std::string& name);
+
 // Combinations that cannot run, keys without effect (scene/cross_check.cpp).
 void cross_check(const CaseDraft& d);
 

@@ -32,12 +32,12 @@ void bound_outputs(CaseReader& r, const std::string& key, double end, double int
                     CaseReader::fmt(end / interval), r.node(key));
 }
 
+}  // namespace
+
 KernelType kernel_from(const std::string& s) {
   return s == "wendland_c2" ? KernelType::WendlandC2 : s == "quintic_spline" ? KernelType::QuinticSpline
                                                                               : KernelType::CubicSpline;
 }
-
-}  // namespace
 
 void read_case_table(CaseReader& top, CaseDraft& d) {
   CaseReader r(top.table("case", true), d.file, "case");

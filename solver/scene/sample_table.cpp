@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kernels/kernel.hpp"
 #include "scene/case_reader.hpp"
+#include "scene/case_tables.hpp"
 #include "scene/open_image.hpp"
 
 namespace psph {
@@ -174,9 +176,9 @@ bool expand_sample(toml::table& tbl, const std::string& file) {
   c.lateral = r.positive("lateral_thickness");
   // Two support radii (at least four spacings) of empty space beyond the lateral faces: a face that
   // the pore water pushes out by half a spacing would otherwise leave the domain and stop the run.
-  const std::string kernel = tbl["discretisation"]["kernel"].value_or(std::string("cubic_spline"));
+  const KernelType kernel = kernel_from(tbl["discretisation"]["kernel"].value_or(std::string("cubic_spline")));
   const double support = tbl["discretisation"]["support_radius"].value_or(
-      tbl["discretisation"]["smoothing_length"].value_or(*spacing) * (kernel == "quintic_spline" ? 3 : 2));
+      tbl["discretisation"]["smoothing_length"].value_or(*spacing) * double(support_per_smoothing_length(kernel)));
   c.margin = std::max(4.0, std::ceil(2 * support / *spacing - 1e-9)) * *spacing;
   c.reservoir = r.positive("reservoir_height");
   const double plate_thickness = r.positive("plate_thickness", *spacing);

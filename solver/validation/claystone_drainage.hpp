@@ -17,7 +17,7 @@ struct ClaystoneDrainage {
   double image_porosity = 0;             // of the image (crop), before any particle moves
   double porosity_start = 0, porosity_end = 0;  // the monitors' fluid volume / sample volume
   double worst_saturation_sum = 0;       // max |S_w + S_g - 1| over the monitor rows
-  double worst_damage_ratio = 0;         // max total damage / elastic particles (each D <= 1)
+  double worst_damage_ratio = 0;         // max total damage / damaging (clay) particles (each D <= 1)
   double damaged_end = 0, total_damage_end = 0, saturation_gas_end = 0;
   long steps = 0;
   int particles = 0;
