@@ -5,6 +5,7 @@
 # percolation times). Confinements in the case's scaled Pa (stress scale 5e7): 10, 8, 6, 4 MPa are
 # 0.2, 0.16, 0.12, 0.08 Pa.
 #   [JOBS=N] cases/claystone/matrix.sh OUTDIR [reduced|cell] [poresph binary] [extra poresph run options...]
+# A case whose run ended, completed or not (OUTDIR/NAME/summary.json), is kept: delete it to run it again.
 # reduced: the 16 x 24 x 20 voxel crop of the fracture's upper part (reservoirs of 4 voxels),
 #          15,680 particles, to 20 us after percolation (at most 0.5 ms): the size this CPU runs
 #          (VALIDATION.md);
@@ -37,9 +38,10 @@ pcw="--set damage.model=pcw --unset damage.tensile_strength --unset damage.compr
      --set damage.elastic_limit_strain=0.0013 --set damage.ultimate_strain=0.0026"
 jobs=${JOBS:-1}  # runs at once (each with OMP_NUM_THREADS threads, if set)
 started=0
-run() {  # name, then its --set options
+run() {  # name, then its --set options; a case that ended (its summary.json) is not run again
   name=$1
   shift
+  [ ! -f "$out/$name/summary.json" ] || return 0
   # shellcheck disable=SC2086  # the options are words
   ( "$poresph" run "$case" $crop "$@" --out "$out/$name" --quiet || echo "matrix.sh: $name ended with exit $?" >&2 ) &
   started=$((started + 1))
