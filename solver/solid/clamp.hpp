@@ -37,9 +37,9 @@ PSPH_HD inline Vec<D> clamp_reaction(const NB& nb, const Kernel<D>& kern, const 
   nb.for_each(w, [&](int k, const Vec<D>& rwk, Real r) PSPH_PAIR {
     if (!mats.is_elastic(s.material[k])) return;
     const Vec<D> g_kw = corrected_gradient(s, k, kern.W(r), kern.grad(rwk, r) * Real(-1));
-    f += (s.piola ? s.piola[k] : s.stress[k]) * g_kw * (s.m[k] / s.rho[k]);
+    f += (s.piola ? s.piola[k] : s.stress[k]) * g_kw * solid_sum_volume(s, k);
   });
-  return f * (s.m[w] / s.rho[w]);
+  return f * solid_sum_volume(s, w);
 }
 
 }  // namespace psph

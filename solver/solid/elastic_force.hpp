@@ -26,6 +26,16 @@
 
 namespace psph {
 
+// The volume a solid neighbour j (elastic or wall) has in the solid's sums: its rest volume
+// m_j / rho0_j. An elastic particle's density does not change; a wall's does near a fluid (it
+// follows the fluid's summed density, and with it the fluid's disorder), but the wall's share of
+// the solid's sums is its place on the lattice: with rest volumes the corrections depend on the
+// reference positions alone and are kept from one list build to the next, fluid or not.
+template <int D>
+PSPH_HD PSPH_PAIR inline Real solid_sum_volume(const ParticleView<D>& s, int j) {
+  return s.m[j] / s.rho0[j];
+}
+
 PSPH_HD inline Real harmonic_mean(Real a, Real b) { return a + b > Real(0) ? Real(2) * a * b / (a + b) : Real(0); }
 
 // u = x - x0, minimum image on periodic axes; stored for output and the elastic energy.
@@ -68,7 +78,7 @@ struct ElasticForcePass {
       Real k = k_i, mu = mu_i;  // walls (clamps) present the particle's own moduli
       if (c.mats.is_elastic(mj) && (mj != mi || moduli.bulk))
         k = harmonic_mean(k_i, bulk(j, mj)), mu = harmonic_mean(mu_i, shear(j, mj));
-      f += navier_pair<D>(u_i - c.s.u[j], rij * (Real(1) / r), k, mu) * (c.s.m[j] / c.s.rho[j] * c.kern.F(r));
+      f += navier_pair<D>(u_i - c.s.u[j], rij * (Real(1) / r), k, mu) * (solid_sum_volume(c.s, j) * c.kern.F(r));
     });
     return f * (Real(1) / c.s.rho[i]);
   }

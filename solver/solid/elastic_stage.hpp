@@ -61,10 +61,10 @@ class ElasticStage {
 
   // After a list build (and reordering): at t = 0 (current = reference positions) the large-strain
   // solid records its lists of t = 0, and after every build drops the damage ghosts retired from the
-  // current lists; a small-strain solid without fluid keeps its corrections.
+  // current lists; a small-strain solid keeps its corrections (solid_sum_volume: rest volumes).
   void lists_built(StepContext<D, B>& cx) {
     if (!active_) return;
-    corrections_kept_ = !large_strain() && !cx.fluid;
+    corrections_kept_ = !large_strain();
     if (corrections_kept_) B::for_each(cx.n(), SolidCorrectionPass<D>{cx.pairs(cx.reference_list())});
     if (!large_strain()) return;
     const int n = cx.n();
@@ -161,9 +161,9 @@ class ElasticStage {
   SolidOptions o_;
   bool active_ = false;
   bool strain_each_step_ = false;
-  // Small strain without fluid: the corrections depend on the reference positions and constant
-  // volumes only (the walls' densities change only with a fluid), so they are computed after each
-  // list build and kept, and the strain pass is one sum instead of three.
+  // Small strain: the corrections depend on the reference positions and the rest volumes only
+  // (solid/elastic_force.hpp, solid_sum_volume), so they are computed after each list build and
+  // kept, and the strain pass is one sum instead of three.
   bool corrections_kept_ = false;
   DeviceArray<std::int32_t, B> reference_ids_, reference_count_;  // large strain: lists of t = 0 by id
   int reference_capacity_ = 0;

@@ -36,7 +36,7 @@ template <int D, class NB = NeighbourList<D>>
 struct SolidCorrectionPass {
   PairContext<D, NB> c;
   PSPH_HD GradientCorrection<D> correction(int i) const {
-    auto volume = [&](int j) { return c.s.m[j] / c.s.rho[j]; };
+    auto volume = [&](int j) { return solid_sum_volume(c.s, j); };
     return gradient_correction(SolidNeighbours<D, NB>{c.nb, c.s, c.mats}, c.kern, i, volume);
   }
   PSPH_HD void operator()(int i) const {
@@ -65,7 +65,7 @@ struct StrainStressPass {
     const int mi = c.s.material[i];
     if (!c.mats.is_elastic(mi)) return;
     const SolidNeighbours<D, NB> solid{c.nb, c.s, c.mats};
-    auto volume = [&](int j) { return c.s.m[j] / c.s.rho[j]; };
+    auto volume = [&](int j) { return solid_sum_volume(c.s, j); };
     const GradientCorrection<D> corr =
         corrections_kept ? stored_correction(c.s, i) : SolidCorrectionPass<D, NB>{c}.correction(i);
     CorrectedGradientSum<D> sum;

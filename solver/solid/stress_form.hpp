@@ -42,7 +42,7 @@ struct StressForcePass {
         t -= (c.s.piola ? c.s.piola[j] : c.s.stress[j]) * g_ji;
         if (traction) t += area * (g_ij - g_ji) * p_i;
       }
-      f += t * (c.s.m[j] / c.s.rho[j]);
+      f += t * solid_sum_volume(c.s, j);
     });
     Vec<D> a = f * (Real(1) / c.s.rho[i]);
     if (c.s.mirror[i] >= 0) a += clamp_reaction(c.nb, c.kern, c.s, c.mats, c.s.index_of_id[c.s.mirror[i]]) * (Real(1) / c.s.m[i]);
