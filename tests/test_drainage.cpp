@@ -1,5 +1,6 @@
 // Drainage machinery: the seeded grain pack, body forces on a region, and the two-phase monitors
 // (saturations, phase pressures, percolation).
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -157,6 +158,26 @@ TEST(Monitors, SaturationAndPressuresAtStart) {
   EXPECT_TRUE(std::isnan(m.last().pressure_gas));  // no gas in the sample
   EXPECT_LT(m.percolation_time(), 0);
   EXPECT_EQ(cols.back(), "v_max_over_sigma_mu");
+}
+
+// The phase pressures are reported over the fluids' initial background pressure: a case at
+// 2 Pa more reports the same means, its pressure field 2 Pa higher.
+TEST(Monitors, PressuresOverTheBackgroundPressure) {
+  double liquid[2] = {0, 0}, field[2] = {0, 0};
+  for (int k = 0; k < 2; ++k) {
+    const std::string text = embedded_case_text("drainage_2d");
+    Case c = load_case_text(k ? replaced(text, "[time]", "[solver]\nbackground_pressure = 2.0\n\n[time]") : text, "d.toml");
+    build_particles(c);
+    auto e = make_engine(c.scene, "cpu");
+    TwoPhaseMonitor m(c.scene, c.monitor_region);
+    m.sample(*e);
+    liquid[k] = m.last().pressure_liquid;
+    const std::vector<double> p = e->field("pressure"), mat = e->field("material");
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (c.scene.materials[static_cast<int>(mat[i])].props.kind == MaterialKind::Fluid) field[k] = std::max(field[k], p[i]);
+  }
+  EXPECT_NEAR(field[1] - field[0], 2.0, 1e-9);
+  EXPECT_NEAR(liquid[1], liquid[0], 1e-9);
 }
 
 // A ramped region starts with no force: at t = 0 the reservoir gas's acceleration lacks the

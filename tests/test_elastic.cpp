@@ -121,6 +121,13 @@ TEST(Elastic, CaseKeys) {
     expect_refused(cube, "[solid]", std::string("[solid]\n") + keys,
                    "solid.coupling: expected \"traction\" or \"pair\" with model = \"saint_venant_kirchhoff\"");
   EXPECT_EQ(error_of(replaced(cube, "[solid]", "[solid]\nmodel = \"saint_venant_kirchhoff\"\ncoupling = \"pair\"")), "");
+  // The reference pressure: the traction's, with fluids about.
+  expect_refused(rod + "\n[solid]\nreference_pressure = 1.0\n", "", "",
+                 "solid.reference_pressure: expected a case with both fluids and elastic solids");
+  EXPECT_EQ(error_of(replaced(cube, "[solid]", "[solid]\nreference_pressure = 1.0")), "");
+  expect_refused(cube, "[solid]", "[solid]\nreference_pressure = -1.0", "solid.reference_pressure");
+  expect_refused(cube, "[solid]", "[solid]\ncoupling = \"pair\"\nreference_pressure = 1.0",
+                 "solid.reference_pressure: expected coupling = \"traction\"");
   expect_refused(cube, "[solver]", "[solver]\nimplicit_viscosity = true", "solver.implicit_viscosity: expected false");
   expect_refused(cube, "[solver]", "[solver]\nlaplacian_correction = \"tensor\"", "solver.laplacian_correction");
   const std::string water = embedded_case_text("poiseuille_2d");

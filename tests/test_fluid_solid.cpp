@@ -94,28 +94,50 @@ TEST(FluidSolid, PairCouplingExchangesMomentumExactly) {
   EXPECT_GT(block_vx, 0.01);  // dragged from rest towards the water's 0.1 m/s
 }
 
-// Water at rest at a background pressure p around an unstrained block: with the traction coupling
-// the block settles to the stress -p I, particle by particle (plane strain: sigma_zz aside).
-TEST(FluidSolid, TractionCouplingHoldsAUniformPressure) {
+// Water at rest at a background pressure of 500 Pa around an unstrained block, the block taking the
+// traction less `reference` ([solid] reference_pressure): the largest |sigma + (p - reference) I|
+// in the block once settled (plane strain: sigma_zz aside), p the fluid's mean pressure (returned
+// in `p_fluid`).
+static double block_stress_error(double reference, double& p_fluid) {
   std::string text = replaced(kBlock, "velocity = [0.1, 0.05]\n", "");
   text = replaced(text, "[solver]", "[solver]\nbackground_pressure = 500.0");
-  text = replaced(text, "[solid]", "[solid]\ndamping_rate = 5.0e3");
+  text = replaced(text, "[solid]", "[solid]\ndamping_rate = 5.0e3\nreference_pressure = " + std::to_string(reference));
   text = replaced(text, "end = 0.005", "end = 0.02");
   auto e = engine_of(text);
   e->run_until(0.02);
   const std::vector<double> mat = e->field("material"), p = e->field("pressure"), s = e->field("stress");
-  double p_fluid = 0;
+  p_fluid = 0;
   int n = 0;
   for (int i = 0; i < e->particles(); ++i)
     if (mat[i] == kWater) p_fluid += p[i], ++n;
   p_fluid /= n;
   double worst = 0;
+  const double load = p_fluid - reference;
   for (int i = 0; i < e->particles(); ++i)
     if (mat[i] == kClay)
-      for (int k = 0; k < 4; ++k) worst = std::max(worst, std::fabs(s[4 * i + k] + (k == 0 || k == 3 ? p_fluid : 0)));
-  std::printf("fluid pressure %.3f Pa; largest |sigma + p I| in the block %.3e Pa\n", p_fluid, worst);
+      for (int k = 0; k < 4; ++k) worst = std::max(worst, std::fabs(s[4 * i + k] + (k == 0 || k == 3 ? load : 0)));
+  std::printf("reference %.0f Pa: fluid pressure %.3f Pa; largest |sigma + (p - p_ref) I| in the block %.3e Pa\n",
+              reference, p_fluid, worst);
+  return worst;
+}
+
+// The traction coupling: a fluid at rest at pressure p holds the block at sigma = -p I, particle
+// by particle.
+TEST(FluidSolid, TractionCouplingHoldsAUniformPressure) {
+  double p_fluid = 0;
+  const double worst = block_stress_error(0.0, p_fluid);
   EXPECT_GT(p_fluid, 100.0);
   EXPECT_LT(worst, 1e-3 * p_fluid);
+}
+
+// [solid] reference_pressure: the block feels the fluid's pressure less the reference, so a
+// background pressure at the reference leaves it unloaded.
+TEST(FluidSolid, ReferencePressureIsNoLoad) {
+  double p_fluid = 0;
+  const double worst = block_stress_error(500.0, p_fluid);
+  EXPECT_GT(p_fluid, 100.0);
+  EXPECT_LT(worst, 1e-3 * p_fluid);
+  EXPECT_LT(std::fabs(p_fluid - 500.0), 0.1 * p_fluid);  // the load left is the fluid's own compression
 }
 
 // The damping's monitor: kinetic + elastic + dissipated energy stays the initial energy while the

@@ -109,7 +109,7 @@ TwoPhaseSample sample_two_phase(const Scene& sc, const MonitorRegion& region, co
     const int g = phase_of(sc.materials[static_cast<int>(material[i])].props) == Phase::Gas ? 1 : 0;
     if (g) gas.push_back(i);
     vol[g] += volume[i];
-    pv[g] += volume[i] * p[i];
+    pv[g] += volume[i] * (p[i] - sc.materials[static_cast<int>(material[i])].props.background_pressure);
     for (int k = 0; k < D; ++k) vv[g][k] += volume[i] * v[i * D + k];
   }
   const double total = vol[0] + vol[1];

@@ -20,7 +20,8 @@ namespace psph {
 struct TwoPhaseSample {
   double saturation_liquid = 0, saturation_gas = 0;  // fluid volume fractions in the region
   double porosity = 0;                               // fluid volume / region volume
-  double pressure_liquid = 0, pressure_gas = 0;      // volume-weighted means (Pa)
+  // volume-weighted means (Pa) over the fluids' initial background pressure ([solver])
+  double pressure_liquid = 0, pressure_gas = 0;
   std::array<double, 3> velocity_liquid{0, 0, 0}, velocity_gas{0, 0, 0};  // volume-weighted means
   bool percolated = false;                           // a gas cluster joins inlet and outlet now
 };

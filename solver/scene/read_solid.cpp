@@ -8,7 +8,7 @@ void read_solid(CaseReader& top, CaseDraft& d) {
   SolverOptions& o = d.c.scene.options;
   CaseReader solid(top.table("solid", false), d.file, "solid");
   for (const char* key :
-       {"formulation", "model", "damping_rate", "coupling", "artificial_viscosity", "artificial_viscosity_beta", "xsph"})
+       {"formulation", "model", "damping_rate", "coupling", "artificial_viscosity", "artificial_viscosity_beta", "xsph", "reference_pressure"})
     if (!d.has_elastic && solid.has(key)) solid.fail(key, "expected a material with kind = \"elastic\" for it to apply to");
   // The stress form by default (solid/stress_form.hpp: any Poisson ratio, free rotations at free
   // surfaces, a per-particle stress law), or the displacement form (solid/elastic_force.hpp,
@@ -36,11 +36,18 @@ void read_solid(CaseReader& top, CaseDraft& d) {
   if (o.solid_coupling == SolidCoupling::PairEos && o.solid_model == SolidModel::SaintVenantKirchhoff)
     solid.fail("coupling", "expected \"traction\" or \"pair\" with model = \"saint_venant_kirchhoff\" (eq. 74's "
                            "pressure -k tr(eps) is a small-strain one)");
-  if (!(d.has_fluid() && d.has_elastic) && solid.has("coupling"))
-    solid.fail("coupling", "expected a case with both fluids and elastic solids for it to apply to");
+  for (const char* key : {"coupling", "reference_pressure"})
+    if (!(d.has_fluid() && d.has_elastic) && solid.has(key))
+      solid.fail(key, "expected a case with both fluids and elastic solids for it to apply to");
   if (!stress && o.solid_coupling == SolidCoupling::Traction)
     solid.fail("coupling", "expected \"pair\" or \"pair_eos\" with formulation = \"displacement\" (the traction "
                            "uses the stress form's boundary sums)");
+  // The pressure the solid feels as no load (solid/fluid_coupling.hpp: AmbientPressurePass), the
+  // fluid's background pressure where that regularises the fluid only.
+  o.solid_reference_pressure = solid.non_negative("reference_pressure", 0.0);
+  if (o.solid_reference_pressure > 0 && o.solid_coupling != SolidCoupling::Traction)
+    solid.fail("reference_pressure", "expected coupling = \"traction\" (the pair couplings load the solid with the "
+                                     "pair forces' absolute pressures)");
   solid.finish();
 }
 

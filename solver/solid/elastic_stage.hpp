@@ -96,7 +96,7 @@ class ElasticStage {
     if (!active_) return;
     const Real zeta = Real(o_.solid_damping_rate);
     const bool traction = cx.fluid && o_.solid_coupling == SolidCoupling::Traction;
-    if (traction) B::for_each(cx.n(), AmbientPressurePass<D>{cx.pairs()});
+    if (traction) B::for_each(cx.n(), AmbientPressurePass<D>{cx.pairs(), Real(o_.solid_reference_pressure)});
     with_solid_neighbours(cx, [&](auto nb) {
       using NB = decltype(nb);
       if (stress_form()) B::for_each(cx.n(), StressForcePass<D, NB>{cx.pairs(nb), zeta, traction});

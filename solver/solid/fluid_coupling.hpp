@@ -48,11 +48,14 @@ struct SolidInterfacePressurePass {
   }
 };
 
-// P_i = sum_j p_j W_ij / sum_j W_ij over the elastic particles j (i included) in contact with the
-// fluid: the fluid's pressure over the solid's surface layer, 0 deeper.
+// P_i = sum_j p_j W_ij / sum_j W_ij - p_ref over the elastic particles j (i included) in contact with
+// the fluid: the fluid's pressure over the solid's surface layer, 0 deeper. p_ref ([solid]
+// reference_pressure) lets a fluid carry a background pressure (fluid/density.hpp) that orders its
+// particles without loading the solid.
 template <int D>
 struct AmbientPressurePass {
   PairContext<D> c;  // lists, kernel, particles, materials
+  Real reference = 0;  // p_ref (Pa)
   PSPH_HD void operator()(int i) const {
     if (!c.mats.is_elastic(c.s.material[i])) return;
     const Real w0 = c.s.fluid_contact[i] ? c.kern.W(Real(0)) : Real(0);
@@ -62,7 +65,7 @@ struct AmbientPressurePass {
       const Real w = c.kern.W(r);
       psum += c.s.p[j] * w, wsum += w;
     });
-    c.s.p_ambient[i] = wsum > Real(0) ? psum / wsum : Real(0);
+    c.s.p_ambient[i] = wsum > Real(0) ? psum / wsum - reference : Real(0);
   }
 };
 

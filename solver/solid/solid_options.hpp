@@ -18,6 +18,9 @@ struct SolidOptions {
   // Monaghan artificial viscosity and XSPH on elastic solids (solid/artificial_viscosity.hpp).
   double solid_artificial_viscosity = 0, solid_artificial_viscosity_beta = 0, solid_xsph = 0;
   SolidCoupling solid_coupling = SolidCoupling::Traction;
+  // Pa: the fluid pressure that loads an elastic solid with nothing (the traction coupling: the
+  // solid feels p - p_ref, Terzaghi's effective stress; solid/fluid_coupling.hpp).
+  double solid_reference_pressure = 0;
 };
 
 }  // namespace psph
