@@ -128,6 +128,11 @@ TEST(Elastic, CaseKeys) {
   expect_refused(cube, "[solid]", "[solid]\nreference_pressure = -1.0", "solid.reference_pressure");
   expect_refused(cube, "[solid]", "[solid]\ncoupling = \"pair\"\nreference_pressure = 1.0",
                  "solid.reference_pressure: expected coupling = \"traction\"");
+  // The hourglass control: the stress form's, alpha in [0, 1].
+  EXPECT_EQ(error_of(replaced(cube, "[solid]", "[solid]\nhourglass_control = 0.1")), "");
+  expect_refused(cube, "[solid]", "[solid]\nhourglass_control = 2.0", "solid.hourglass_control: expected a penalty factor alpha in [0, 1]");
+  expect_refused(cube, "[solid]", "[solid]\nformulation = \"displacement\"\ncoupling = \"pair\"\nhourglass_control = 0.1",
+                 "solid.hourglass_control: expected formulation = \"stress\"");
   expect_refused(cube, "[solver]", "[solver]\nimplicit_viscosity = true", "solver.implicit_viscosity: expected false");
   expect_refused(cube, "[solver]", "[solver]\nlaplacian_correction = \"tensor\"", "solver.laplacian_correction");
   const std::string water = embedded_case_text("poiseuille_2d");

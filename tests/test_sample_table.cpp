@@ -215,3 +215,32 @@ TEST(SampleTable, RefusesWhatItCannotBuild) {
   EXPECT_NE(error_of(replaced(kCase, "voxel_size = 2.0e-8,", "origin = [0.0, 0.0, 0.0], voxel_size = 2.0e-8,")).find("sample.image.origin"),
             std::string::npos);
 }
+
+// plate_guard_thickness: the clay's voxels next to each plate are the lateral material (undamaged),
+// the pores and the clay farther in as they were.
+TEST(SampleTable, AGuardOfTheLateralMaterialBesideThePlates) {
+  const std::string sleeve = "[materials.sleeve]\nkind = \"elastic\"\ndensity = 1000.0\nyoung_modulus = 60.0\npoisson_ratio = 0.1\n[time]";
+  const std::string text = replaced(replaced(replaced(kCase, "[time]", sleeve), "lateral_material = \"clay\"", "lateral_material = \"sleeve\""),
+                                    "reservoir_material", "plate_guard_thickness = 2.0e-8\nreservoir_material");
+  const Case c = built(text), plain = built(kCase);
+  const Scene& sc = c.scene;
+  ASSERT_EQ(sc.count(), plain.scene.count());
+  auto name = [](const Scene& s, long i) { return s.materials[std::size_t(s.material[std::size_t(i)])].name; };
+  long guarded = 0;
+  for (long i = 0; i < sc.count(); ++i) {
+    const long x = long(std::floor(sc.x[std::size_t(3 * i)] / kVoxel)) - kMargin;
+    const long y = long(std::floor(sc.x[std::size_t(3 * i + 1)] / kVoxel)) - kMargin;
+    const long z = long(std::floor(sc.x[std::size_t(3 * i + 2)] / kVoxel));
+    if (x < 2 || y < 2 || x >= 18 || y >= 26 || z < 4 || z >= 24) continue;  // the layers and the reservoirs
+    const std::string was = name(plain.scene, i), now = name(sc, i);
+    const bool guard = z == 5 || z == 22;
+    ASSERT_EQ(now, guard && was == "clay" ? "sleeve" : was) << x << " " << y << " " << z;
+    guarded += now == "sleeve";
+  }
+  EXPECT_GT(guarded, 2 * 16 * 24 / 3);  // most of the two rows is clay
+  EXPECT_NE(error_of(replaced(text, "plate_guard_thickness = 2.0e-8", "plate_guard_thickness = 1.8e-7")).find("sample.plate_guard_thickness"),
+            std::string::npos);
+  const std::string wall = error_of(replaced(text, "lateral_material = \"sleeve\"", "lateral_material = \"plate\""));
+  EXPECT_NE(wall.find("sample.plate_guard_thickness"), std::string::npos) << wall;
+  EXPECT_NE(error_of(replaced(kCase, "labels =", "end_guard = \"clay\", labels =")).find("sample.image.end_guard"), std::string::npos);
+}

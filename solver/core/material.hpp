@@ -24,6 +24,9 @@ struct Material {
   // Colour of the continuum surface force (interface/surface_tension.hpp, Pazdniakou eqs. 6, 10):
   // +1 liquid, -1 gas, cos(contact angle) for a wall.
   Real colour = 1;
+  // Walls that clamp an elastic solid (solid/clamp.hpp): false, they hold every component of its
+  // displacement (a bonded plate); true, the normal one only (a lubricated plate, free to slip).
+  bool slip_clamp = false;
 };
 
 // Young's modulus and Poisson ratio of the moduli k, mu: E = 9 k mu / (3 k + mu),

@@ -208,25 +208,39 @@ void trim_walls(CaseReader& r, const CaseDraft& d, ImageGrid& g, Phases& ph) {
 // the voxels of solid materials within that thickness of the image's two faces along the axis take
 // the wall material, the pores stay open (Pazdniakou 2018 §5.2: rigid plates hold the sample top
 // and bottom, so that it does not drift, and gas enters and water leaves through its pores).
+// end_guard (an elastic material), end_guard_thickness (m): the elastic voxels within that
+// thickness beyond each plate take it (an undamaged guard between the plates' clamp and a damaging
+// matrix: fully damaged particles beside the clamp made the claystone cell unstable, VALIDATION.md).
 void end_plates(CaseReader& r, const CaseDraft& d, ImageGrid& g, Phases& ph) {
-  for (const char* key : {"end_plate_thickness", "end_plate_axis"})
+  for (const char* key : {"end_plate_thickness", "end_plate_axis", "end_guard"})
     if (!r.has("end_plates") && r.has(key)) r.fail(key, "expected end_plates (a wall material) for it to apply to");
+  if (r.has("end_guard_thickness") && !r.has("end_guard")) r.fail("end_guard_thickness", "expected end_guard (an elastic material) for it to apply to");
   if (!r.has("end_plates")) return;
   const int plate = d.material(r, "end_plates", MaterialKind::Wall, "a wall material");
   const int axis = r.axis("end_plate_axis", d.dimension(), std::string(1, "xyz"[d.dimension() - 1]));
-  const double t = r.positive("end_plate_thickness");
-  const long n = g.volume.size[std::size_t(axis)], layers = long(std::ceil(t / g.voxel[std::size_t(axis)] - 1e-9));
-  if (2 * layers >= n)
-    r.fail("end_plate_thickness", "expected two plates thinner than half the image along " + std::string(1, "xyz"[axis]) +
-                                      " (" + std::to_string(n) + " voxels; the plates take " + std::to_string(layers) + " each)");
+  const double voxel = g.voxel[std::size_t(axis)];
+  const long n = g.volume.size[std::size_t(axis)], layers = long(std::ceil(r.positive("end_plate_thickness") / voxel - 1e-9));
+  long guard = 0;
+  int guard_mat = -1;
+  if (r.has("end_guard")) {
+    guard_mat = d.material(r, "end_guard", MaterialKind::Elastic, "an elastic material");
+    guard = long(std::ceil(r.positive("end_guard_thickness") / voxel - 1e-9));
+  }
+  if (2 * (layers + guard) >= n)
+    r.fail(guard ? "end_guard_thickness" : "end_plate_thickness",
+           "expected two plates" + std::string(guard ? " and their guards" : "") + " thinner than half the image along " +
+               std::string(1, "xyz"[axis]) + " (" + std::to_string(n) + " voxels; they take " + std::to_string(layers + guard) + " each)");
   const std::uint8_t to = phase_of(r, ph, plate, "end_plates");
+  const std::uint8_t to_guard = guard ? phase_of(r, ph, guard_mat, "end_guard") : to;
   const auto& size = g.volume.size;
+  auto kind = [&](int m) { return d.c.scene.materials[std::size_t(m)].props.kind; };
   for (long i = 0; i < g.volume.voxels(); ++i) {
     const std::array<long, 3> q{i % size[0], i / size[0] % size[1], i / (size[0] * size[1])};
-    const long a = q[std::size_t(axis)];
+    const long a = q[std::size_t(axis)], from_face = std::min(a, n - 1 - a);
     const int m = ph.material[g.volume.phase[std::size_t(i)]];
-    const bool solid = m >= 0 && d.c.scene.materials[std::size_t(m)].props.kind != MaterialKind::Fluid;
-    if (solid && (a < layers || a >= n - layers)) g.volume.phase[std::size_t(i)] = to;
+    if (m < 0 || kind(m) == MaterialKind::Fluid) continue;
+    if (from_face < layers) g.volume.phase[std::size_t(i)] = to;
+    else if (from_face < layers + guard && kind(m) == MaterialKind::Elastic) g.volume.phase[std::size_t(i)] = to_guard;
   }
 }
 

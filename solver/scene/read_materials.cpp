@@ -55,7 +55,14 @@ SceneMaterial read_material(const std::string& name, const toml::node& v, CaseRe
     m.body_force = r.vec<double>("body_force", d.dimension(), std::array<double, 3>{0, 0, 0});
     d.has_rigid = true;
   }
-  if (kind == "wall") d.has_walls = true;
+  if (kind == "wall") {
+    d.has_walls = true;
+    // How the wall clamps an elastic solid (solid/clamp.hpp): "stick" (every displacement
+    // component held) or "slip" (the normal one only: a lubricated platen, no shear traction).
+    m.props.slip_clamp = r.choice("clamp", {"stick", "slip"}, "stick") == "slip";
+  } else if (r.has("clamp")) {
+    r.fail("clamp", "expected kind = \"wall\" for it to apply to");
+  }
   if (kind == "fluid") {
     read_fluid(r, d, m);
   } else if (r.has("contact_angle")) {

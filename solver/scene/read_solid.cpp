@@ -8,7 +8,7 @@ void read_solid(CaseReader& top, CaseDraft& d) {
   SolverOptions& o = d.c.scene.options;
   CaseReader solid(top.table("solid", false), d.file, "solid");
   for (const char* key :
-       {"formulation", "model", "damping_rate", "coupling", "artificial_viscosity", "artificial_viscosity_beta", "xsph", "reference_pressure"})
+       {"formulation", "model", "damping_rate", "coupling", "artificial_viscosity", "artificial_viscosity_beta", "xsph", "reference_pressure", "hourglass_control"})
     if (!d.has_elastic && solid.has(key)) solid.fail(key, "expected a material with kind = \"elastic\" for it to apply to");
   // The stress form by default (solid/stress_form.hpp: any Poisson ratio, free rotations at free
   // surfaces, a per-particle stress law), or the displacement form (solid/elastic_force.hpp,
@@ -48,6 +48,13 @@ void read_solid(CaseReader& top, CaseDraft& d) {
   if (o.solid_reference_pressure > 0 && o.solid_coupling != SolidCoupling::Traction)
     solid.fail("reference_pressure", "expected coupling = \"traction\" (the pair couplings load the solid with the "
                                      "pair forces' absolute pressures)");
+  // Ganzenmüller's hourglass control (solid/hourglass.hpp; TrixiParticles' default 0.1);
+  // at most 1, so that the penalty's stiffness stays below the elastic one that sets the time step.
+  o.solid_hourglass = solid.non_negative("hourglass_control", 0.0);
+  if (o.solid_hourglass > 1) solid.fail("hourglass_control", "expected a penalty factor alpha in [0, 1]");
+  if (o.solid_hourglass > 0 && !stress)
+    solid.fail("hourglass_control", "expected formulation = \"stress\" (the displacement form's pair forces have no "
+                                    "zero-energy mode)");
   solid.finish();
 }
 

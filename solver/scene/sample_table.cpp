@@ -87,7 +87,7 @@ struct Cell {
 // The geometries: walls around everything, the lateral layer beside the sample (between the
 // plates), the reservoirs' gas inside, the image over it (later geometries win).
 toml::array geometries(const Cell& c, toml::table img, const std::string& walls, const std::string& lateral,
-                       const std::string& gas, double plate_thickness) {
+                       const std::string& gas, double plate_thickness, double guard) {
   const int D = c.D, a = c.axis;
   toml::array g;
   auto add = [&](Vec3 lo, Vec3 hi, const std::string& m) {
@@ -105,6 +105,7 @@ toml::array geometries(const Cell& c, toml::table img, const std::string& walls,
   img.insert_or_assign("end_plates", walls);
   img.insert_or_assign("end_plate_thickness", plate_thickness);
   img.insert_or_assign("end_plate_axis", std::string(1, "xyz"[a]));
+  if (guard > 0) img.insert_or_assign("end_guard", lateral), img.insert_or_assign("end_guard_thickness", guard);
   g.push_back(std::move(img));
   return g;
 }
@@ -182,6 +183,9 @@ bool expand_sample(toml::table& tbl, const std::string& file) {
   c.margin = std::max(4.0, std::ceil(2 * support / *spacing - 1e-9)) * *spacing;
   c.reservoir = r.positive("reservoir_height");
   const double plate_thickness = r.positive("plate_thickness", *spacing);
+  const double guard = r.non_negative("plate_guard_thickness", 0.0);
+  if (guard > 0 && kind_of(tbl, lateral) != "elastic")
+    r.fail("plate_guard_thickness", "expected an elastic lateral_material for the guard (\"" + shown(lateral) + "\" is a wall)");
   const double dp = r.positive("pressure_drop"), sigma = r.non_negative("confinement", 0.0);
   const double drive_ramp = r.non_negative("drive_ramp", 0.0), conf_ramp = r.non_negative("confinement_ramp", 0.0);
   if (sigma > 0 && kind_of(tbl, lateral) != "elastic")
@@ -193,7 +197,7 @@ bool expand_sample(toml::table& tbl, const std::string& file) {
     if (v < *spacing * (1 - 1e-9) || std::fabs(v / *spacing - std::round(v / *spacing)) > 1e-6 * v / *spacing)
       r.fail(key, "expected a whole number of spacings (" + CaseReader::fmt(*spacing) + " m), got " + CaseReader::fmt(v));
   CaseReader img(r.table("image", true), file, "sample.image");
-  for (const char* k : {"shape", "origin", "end_plates", "end_plate_thickness", "end_plate_axis"})
+  for (const char* k : {"shape", "origin", "end_plates", "end_plate_thickness", "end_plate_axis", "end_guard", "end_guard_thickness"})
     if (img.has(k)) img.fail(k, "expected it from [sample] (remove it)");
   const Vec3 voxel = per_axis(img, "voxel_size", c.D, 0.0);
   Vec3 coarsen{1, 1, 1};
@@ -211,12 +215,15 @@ bool expand_sample(toml::table& tbl, const std::string& file) {
   if (!(2 * c.plate < c.sample[std::size_t(c.axis)] * (1 - 1e-9)))
     r.fail("plate_thickness", "expected two plates thinner than half the sample along the flow axis (" +
                                   CaseReader::fmt(c.sample[std::size_t(c.axis)]) + " m), got " + CaseReader::fmt(c.plate) + " each");
+  if (guard > 0 && !(2 * (c.plate + std::ceil(guard / cv - 1e-9) * cv) < c.sample[std::size_t(c.axis)] * (1 - 1e-9)))
+    r.fail("plate_guard_thickness", "expected two plates and their guards thinner than half the sample along the flow axis (" +
+                                        CaseReader::fmt(c.sample[std::size_t(c.axis)]) + " m), got " + CaseReader::fmt(guard) + " each");
   const auto percolation_distance = r.has("percolation_distance") ? r.positive("percolation_distance") : 0.0;
   r.finish();
 
   // Moved, not copied: toml++ keeps a node's source (its line, which the image's label order and
   // the messages use) only on a move.
-  toml::array geometry = geometries(c, std::move(*tbl["sample"]["image"].as_table()), walls, lateral, gas, plate_thickness);
+  toml::array geometry = geometries(c, std::move(*tbl["sample"]["image"].as_table()), walls, lateral, gas, plate_thickness, guard);
   if (toml::array* user = tbl["geometry"].as_array())
     for (auto& g : *user) geometry.push_back(std::move(g));
   std::array<bool, 3> periodic{false, false, false};

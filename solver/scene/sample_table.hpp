@@ -10,7 +10,8 @@
 //   [[geometry]]  the reservoir walls (plate_material) around everything, the lateral layer
 //                 (lateral_material) beside the sample, the reservoirs' gas, the image (with
 //                 end_plates: its solid voxels within plate_thickness of the two faces along the
-//                 flow axis are plate_material, the pores open);
+//                 flow axis are plate_material, the pores open; its elastic voxels within
+//                 plate_guard_thickness beyond them are lateral_material: an undamaged guard);
 //   [[body_force_region]]  on the reservoir gas only, rho_g |F| (2 H_r) = pressure_drop
 //                 (Pazdniakou §5.2: p_g = rho_g F H_r with H_r the reservoirs' total height);
 //   [[solid_load]] the confinement as a traction -sigma n_out on the lateral layer's outermost

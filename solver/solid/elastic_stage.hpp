@@ -56,6 +56,7 @@ class ElasticStage {
       s.defgrad.upload(std::vector<Mat<D>>(n, Mat<D>::identity()));  // undeformed until the first strain pass
       s.add_field(s.defgrad, D * D, "deformation_gradient", "-", "F = I + grad u (large strain), row-major");
     }
+    if (o.solid_hourglass > 0) s.grad_u.resize(n), s.grad_u.zero();
     cx.follow_ids |= cx.walls || large_strain();  // clamps and reference lists find particles by id
   }
 
@@ -99,7 +100,7 @@ class ElasticStage {
     if (traction) B::for_each(cx.n(), AmbientPressurePass<D>{cx.pairs(), Real(o_.solid_reference_pressure)});
     with_solid_neighbours(cx, [&](auto nb) {
       using NB = decltype(nb);
-      if (stress_form()) B::for_each(cx.n(), StressForcePass<D, NB>{cx.pairs(nb), zeta, traction});
+      if (stress_form()) B::for_each(cx.n(), StressForcePass<D, NB>{cx.pairs(nb), zeta, traction, Real(o_.solid_hourglass)});
       else B::for_each(cx.n(), ElasticForcePass<D>{cx.pairs(cx.reference_list()), zeta, moduli});
       if (o_.solid_artificial_viscosity > 0 || o_.solid_artificial_viscosity_beta > 0 || o_.solid_xsph > 0)
         B::for_each(cx.n(), SolidViscosityPass<D, NB>{nb, cx.grid, cx.kern, cx.view(), cx.mats,

@@ -21,6 +21,8 @@ struct SolidOptions {
   // Pa: the fluid pressure that loads an elastic solid with nothing (the traction coupling: the
   // solid feels p - p_ref, Terzaghi's effective stress; solid/fluid_coupling.hpp).
   double solid_reference_pressure = 0;
+  // Ganzenmüller's hourglass control of the stress form (solid/hourglass.hpp): alpha, 0 for none.
+  double solid_hourglass = 0;
 };
 
 }  // namespace psph

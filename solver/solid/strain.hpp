@@ -73,6 +73,7 @@ struct StrainStressPass {
       sum.add(c.s.u[j] - c.s.u[i], c.kern.W(r), c.kern.grad(rij, r), volume(j));
     });
     const Mat<D> grad_u = sum.corrected(corr);
+    if (c.s.grad_u) c.s.grad_u[i] = grad_u;
     const Real k = c.mats[mi].bulk_modulus, mu = c.mats[mi].shear_modulus;
     if (c.s.piola) {  // Saint Venant-Kirchhoff (large strain): Green-Lagrange strain, Piola stress
       const LargeStrain<D> ls = saint_venant_kirchhoff(grad_u, k, mu);

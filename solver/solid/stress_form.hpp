@@ -9,6 +9,7 @@
 // forces (elastic_force.hpp), it holds for any Poisson ratio, leaves rigid rotations free at free
 // surfaces, and takes a per-particle stress law (damage).
 #include "solid/clamp.hpp"
+#include "solid/hourglass.hpp"
 #include "solid/strain.hpp"
 #include "stage/pass_context.hpp"
 
@@ -21,6 +22,7 @@ struct StressForcePass {
   // The fluid's traction P_i b_i, b_i = sum_j V_j (g_ij - g_ji) over elastic j, P_i the ambient
   // pressure (solid/fluid_coupling.hpp): the stresses taken relative to -P_i I.
   bool traction = false;
+  Real hourglass = 0;  // alpha of the hourglass control (solid/hourglass.hpp), 0 for none
   PSPH_HD void operator()(int i) const {
     const int mi = c.s.material[i];
     if (!c.mats.is_elastic(mi)) return;
@@ -30,7 +32,7 @@ struct StressForcePass {
     const Mat<D> sigma_i = c.s.piola ? c.s.piola[i] : c.s.stress[i];
     const Real p_i = traction ? c.s.p_ambient[i] : Real(0);
     const Mat<D> area = c.s.defgrad ? cofactor(c.s.defgrad[i]) : Mat<D>::identity();
-    Vec<D> f = Vec<D>::zero();
+    Vec<D> f = Vec<D>::zero(), f_hg = Vec<D>::zero();
     SolidNeighbours<D, NB>{c.nb, c.s, c.mats}.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
       if (r <= Real(0)) return;
       const Real W = c.kern.W(r);
@@ -41,10 +43,12 @@ struct StressForcePass {
         const Vec<D> g_ji = corrected_gradient(c.s, j, W, gradW * Real(-1));
         t -= (c.s.piola ? c.s.piola[j] : c.s.stress[j]) * g_ji;
         if (traction) t += area * (g_ij - g_ji) * p_i;
+        if (hourglass > Real(0))
+          f_hg += hourglass_force(c.s, c.mats, c.kern, hourglass, i, j, rij, r, solid_sum_volume(c.s, i), solid_sum_volume(c.s, j));
       }
       f += t * solid_sum_volume(c.s, j);
     });
-    Vec<D> a = f * (Real(1) / c.s.rho[i]);
+    Vec<D> a = f * (Real(1) / c.s.rho[i]) + f_hg * (Real(1) / c.s.m[i]);
     if (c.s.mirror[i] >= 0) a += clamp_reaction(c.nb, c.kern, c.s, c.mats, c.s.index_of_id[c.s.mirror[i]]) * (Real(1) / c.s.m[i]);
     c.s.a[i] = a + c.mats.body_force[mi] - c.s.v[i] * damping;
   }

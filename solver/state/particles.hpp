@@ -42,6 +42,7 @@ struct ParticleView {
   Real* shepard = nullptr;   // the gradient correction S_i, G_i, K_i of the strain pass (solid/strain.hpp)
   Vec<D>* shepard_grad = nullptr;
   Mat<D>* kcorr = nullptr;
+  Mat<D>* grad_u = nullptr;  // grad u of the strain pass, for the hourglass control only (solid/hourglass.hpp)
   std::int32_t* mirror = nullptr;       // clamps: id of the mirror partner, -1 if none (engine/clamp_partners.hpp)
   std::int32_t* index_of_id = nullptr;  // current index of each id (clamps, rigid bodies)
   // Fluids with elastic solids only (null otherwise): solid/fluid_coupling.hpp.
@@ -105,6 +106,7 @@ class ParticleState {
     v.colour = colour.data(), v.colour_gradient = colour_gradient.data(), v.curvature = curvature.data();
     v.x0 = x0.data(), v.u = u.data(), v.strain = strain.data(), v.stress = stress.data();
     v.shepard = shepard.data(), v.shepard_grad = shepard_grad.data(), v.kcorr = kcorr.data();
+    v.grad_u = grad_u.data();
     v.mirror = mirror.data(), v.index_of_id = index_of_id.data();
     v.visc_scale = visc_scale.data(), v.fluid_contact = fluid_contact.data(), v.p_ambient = p_ambient.data();
     v.body = body.data(), v.piola = piola.data(), v.defgrad = defgrad.data(), v.load_mask = load_mask.data();
@@ -140,6 +142,7 @@ class ParticleState {
   DeviceArray<Real, B> shepard;  // the strain pass's correction (each step, or kept from the list build): not registered
   DeviceArray<Vec<D>, B> shepard_grad;
   DeviceArray<Mat<D>, B> kcorr;
+  DeviceArray<Mat<D>, B> grad_u;  // the hourglass control's, recomputed each step: not registered
   DeviceArray<std::int32_t, B> mirror;
   DeviceArray<std::int32_t, B> index_of_id;  // not registered: recomputed after every reordering
   DeviceArray<Mat<D>, B> piola, defgrad;     // large strain only
