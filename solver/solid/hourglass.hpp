@@ -1,6 +1,6 @@
 #pragma once
-// Hourglass control of the stress form (Ganzenmüller 2015, Comput. Methods Appl. Mech. Engrg. 286,
-// eqs. 21-23; the penalty of O'Connor & Rogers 2021's total-Lagrangian SPH). The collocated strain
+// Hourglass control of the stress form (Ganzenmüller 2015, Comput. Methods Appl. Mech. Engrg. 286;
+// the penalty of O'Connor & Rogers 2021's total-Lagrangian SPH). The collocated strain
 // sum (solid/strain.hpp) is blind to a displacement that alternates from one particle to the next:
 // with u_j - u_i = -2a on both sides, the two neighbours' terms cancel, so that mode has no elastic
 // energy and nothing holds it (a zero-energy mode; Deptulski 2021 §2.3 lists them among SPH's
@@ -18,21 +18,27 @@
 
 namespace psph {
 
-// The penalty force on i from elastic neighbour j (x_ij = x_i - x_j at distance r > 0).
+// Young's modulus of particle i's material (E_i, taken once per particle by the force pass).
 template <int D>
-PSPH_HD PSPH_PAIR inline Vec<D> hourglass_force(const ParticleView<D>& s, const MaterialTable<D>& mats,
-                                                const Kernel<D>& kern, Real alpha, int i, int j,
-                                                const Vec<D>& x_ij, Real r, Real v_i, Real v_j) {
+PSPH_HD inline Real young_of(const ParticleView<D>& s, const MaterialTable<D>& mats, int i) {
+  const auto& m = mats[s.material[i]];
+  return young_modulus(m.bulk_modulus, m.shear_modulus);
+}
+
+// Elastic neighbour j's share of the penalty force on i, less alpha V_i (x_ij = x_i - x_j at
+// distance r > 0, V_j its volume): the force pass scales the sum once.
+template <int D>
+PSPH_HD PSPH_PAIR inline Vec<D> hourglass_share(const ParticleView<D>& s, const MaterialTable<D>& mats,
+                                                const Kernel<D>& kern, Real young_i, int i, int j,
+                                                const Vec<D>& x_ij, Real r, Real v_j) {
   const Vec<D> u_ij = s.u[i] - s.u[j];
   const Vec<D> X_ij = x_ij - u_ij;
   const Real R2 = dot(X_ij, X_ij);
   if (R2 <= Real(0)) return Vec<D>::zero();
   const Vec<D> e = (s.grad_u[i] * X_ij + s.grad_u[j] * X_ij) * Real(0.5) - u_ij;
   const Vec<D> n = x_ij * (Real(1) / r);
-  const auto& a = mats[s.material[i]];
-  const auto& b = mats[s.material[j]];
-  const Real E = Real(0.5) * (young_modulus(a.bulk_modulus, a.shear_modulus) + young_modulus(b.bulk_modulus, b.shear_modulus));
-  return n * (alpha * E * v_i * v_j * kern.W(std::sqrt(R2)) / R2 * dot(e, n));
+  const Real E = Real(0.5) * (young_i + young_of(s, mats, j));
+  return n * (E * v_j * kern.W(std::sqrt(R2)) / R2 * dot(e, n));
 }
 
 }  // namespace psph

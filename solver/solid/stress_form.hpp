@@ -33,6 +33,7 @@ struct StressForcePass {
     const Real p_i = traction ? c.s.p_ambient[i] : Real(0);
     const Mat<D> area = c.s.defgrad ? cofactor(c.s.defgrad[i]) : Mat<D>::identity();
     Vec<D> f = Vec<D>::zero(), f_hg = Vec<D>::zero();
+    const Real young_i = hourglass > Real(0) ? young_of(c.s, c.mats, i) : Real(0);
     SolidNeighbours<D, NB>{c.nb, c.s, c.mats}.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
       if (r <= Real(0)) return;
       const Real W = c.kern.W(r);
@@ -44,11 +45,11 @@ struct StressForcePass {
         t -= (c.s.piola ? c.s.piola[j] : c.s.stress[j]) * g_ji;
         if (traction) t += area * (g_ij - g_ji) * p_i;
         if (hourglass > Real(0))
-          f_hg += hourglass_force(c.s, c.mats, c.kern, hourglass, i, j, rij, r, solid_sum_volume(c.s, i), solid_sum_volume(c.s, j));
+          f_hg += hourglass_share(c.s, c.mats, c.kern, young_i, i, j, rij, r, solid_sum_volume(c.s, j));
       }
       f += t * solid_sum_volume(c.s, j);
     });
-    Vec<D> a = f * (Real(1) / c.s.rho[i]) + f_hg * (Real(1) / c.s.m[i]);
+    Vec<D> a = f * (Real(1) / c.s.rho[i]) + f_hg * (hourglass / c.s.rho0[i]);  // alpha V_i / m_i = alpha / rho0_i
     if (c.s.mirror[i] >= 0) a += clamp_reaction(c.nb, c.kern, c.s, c.mats, c.s.index_of_id[c.s.mirror[i]]) * (Real(1) / c.s.m[i]);
     c.s.a[i] = a + c.mats.body_force[mi] - c.s.v[i] * damping;
   }
