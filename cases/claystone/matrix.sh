@@ -1,4 +1,4 @@
-#!/bin/sh
+#!/bin/bash
 # The run matrix of Pazdniakou 2018 Table 5 and Deptulski 2021 Ch. 5 on the synthetic claystone
 # (cases/claystone_drainage.toml), one `poresph run --set ...` per case, then `poresph report` over
 # them all (saturations, porosity, damage, pressures, Pc against S_g and percolation.md, the table of
@@ -7,9 +7,9 @@
 #   [JOBS=N] cases/claystone/matrix.sh OUTDIR [reduced|cell] [poresph binary] [extra poresph run options...]
 # A case whose run ended, completed or not (OUTDIR/NAME/summary.json), is kept: delete it to run it again.
 # reduced: the 16 x 24 x 20 voxel crop of the fracture's upper part (reservoirs of 4 voxels),
-#          15,680 particles, to 20 us after percolation (at most 0.5 ms): the size this CPU runs
+#          21,504 particles, to 20 us after percolation (at most 0.5 ms): the size this CPU runs
 #          (VALIDATION.md);
-# cell:    the whole 50^3 sample (204,120 particles): a GPU size (add --backend cuda).
+# cell:    the whole 50^3 sample (235,480 particles): a GPU size (add --backend cuda).
 set -euf  # -f: the [..] of the --set values are not file patterns
 out=${1:?usage: matrix.sh OUTDIR [reduced|cell] [poresph] [run options...]}
 size=${2:-reduced}
@@ -36,16 +36,14 @@ no_damage="--unset damage $fields $solid_views"
 # Y_c0 = E eps_0 eps_u / 2 (the model's defaults with these strains; Deptulski 2021 §5.3).
 pcw="--set damage.model=pcw --unset damage.tensile_strength --unset damage.compressive_strength
      --set damage.elastic_limit_strain=0.0013 --set damage.ultimate_strain=0.0026"
-jobs=${JOBS:-1}  # runs at once (each with OMP_NUM_THREADS threads, if set)
-started=0
+jobs=${JOBS:-1}  # runs at once (each with OMP_NUM_THREADS threads, if set); a slot frees when its run ends
 run() {  # name, then its --set options; a case that ended (its summary.json) is not run again
   name=$1
   shift
   [ ! -f "$out/$name/summary.json" ] || return 0
+  while [ "$(jobs -pr | wc -l)" -ge "$jobs" ]; do wait -n || true; done
   # shellcheck disable=SC2086  # the options are words
   ( "$poresph" run "$case" $crop "$@" --out "$out/$name" --quiet || echo "matrix.sh: $name ended with exit $?" >&2 ) &
-  started=$((started + 1))
-  [ $((started % jobs)) -ne 0 ] || wait
 }
 mkdir -p "$out"
 # shellcheck disable=SC2086

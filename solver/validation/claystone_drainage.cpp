@@ -57,7 +57,7 @@ ClaystoneDrainage run_claystone_drainage(const Case& c, const std::string& backe
 
 // The CI crop: the fracture's upper part, 16 x 24 x 20 voxels (the crop of tests/test_sample_table.cpp),
 // reservoirs of 4 voxels, 20 us with the drive ramped over 50 us (over the case's 100 us the gas
-// has not entered the sample by 20 us): 15,680 particles.
+// has not entered the sample by 20 us): 21,504 particles.
 const std::vector<std::string> kCiCrop = {
     "sample.image.crop.lower=[16, 12, 30]", "sample.image.crop.upper=[32, 36, 50]", "sample.reservoir_height=8e-8",
     "sample.drive_ramp=5e-5", "time.end=2e-5", "output.monitor_interval=1e-6"};
