@@ -1,4 +1,5 @@
 #!/bin/bash
+# shellcheck disable=SC2089,SC2090  # the quotes inside the --set values are TOML's, passed on literally
 # The run matrix of Pazdniakou 2018 Table 5 and Deptulski 2021 Ch. 5 on the synthetic claystone
 # (cases/claystone_drainage.toml), one `poresph run --set ...` per case, then `poresph report` over
 # them all (saturations, porosity, damage, pressures, Pc against S_g and percolation.md, the table of
@@ -14,7 +15,7 @@ set -euf  # -f: the [..] of the --set values are not file patterns
 out=${1:?usage: matrix.sh OUTDIR [reduced|cell] [poresph] [run options...]}
 size=${2:-reduced}
 poresph=${3:-poresph}
-[ $# -ge 3 ] && shift 3 || shift $#
+if [ $# -ge 3 ]; then shift 3; else shift $#; fi
 here=$(cd "$(dirname "$0")/.." && pwd)
 case=$here/claystone_drainage.toml
 case $size in
