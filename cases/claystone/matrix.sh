@@ -29,7 +29,9 @@ esac
 solid_views="--pipeline phases --pipeline principal_stress --pipeline displacement"
 damage_views="$solid_views --pipeline damage"
 fields='--set output.fields=["velocity","pressure","material","displacement","principal_stress"]'
+# The rigid matrix has no elastic voxels, so no guard beyond its plates.
 rigid="--set sample.image.labels.1=plate --set sample.image.labels.2=plate --set sample.lateral_material=plate
+       --unset sample.plate_guard_thickness
        --unset sample.confinement --unset sample.confinement_ramp --unset damage --unset solid
        --set output.fields=[\"velocity\",\"pressure\",\"material\"] --pipeline phases"
 no_damage="--unset damage $fields $solid_views"
