@@ -228,3 +228,34 @@ TEST(FluidSolid, ADamagedSolidPresentsItsDamagedPressure) {
   }
   EXPECT_GT(degraded, 0);
 }
+
+// The traction coupling loads the faces the fluid wets, not the face a body sits on: a block on a
+// plate in water at rest at 500 Pa is pressed onto the plate by p times its top face (its sides
+// cancel), as the walls count as the body's continuation in b_i (solid/stress_form.hpp). When they
+// did not, the plate face took the traction too (a net force near zero), and the pore water's
+// pressure fed back into the first rows above a plate (VALIDATION.md, the wider crop).
+TEST(FluidSolid, TractionPressesABodyOntoItsPlate) {
+  std::string text = replaced(kBlock, "velocity = [0.1, 0.05]\n", "");
+  text = replaced(text, "[solver]", "[solver]\nbackground_pressure = 500.0");
+  text = replaced(text, "[solid]", "[materials.plate]\nkind = \"wall\"\n[solid]");
+  text = replaced(text, "lower = [0.005, 0.005]", "lower = [0.005, 0.003]");
+  text = replaced(text, "upper = [0.011, 0.011]", "upper = [0.011, 0.009]");
+  text += "[[geometry]]\nshape = \"box\"\nlower = [0.0, 0.0]\nupper = [0.016, 0.003]\nmaterial = \"plate\"\n";
+  auto e = engine_of(text);
+  e->step(1.0);
+  const std::vector<double> mat = e->field("material"), m = e->field("mass"), a = e->field("acceleration"),
+                            p = e->field("pressure");
+  constexpr double kPlateClay = 0, kPlateWater = 2;  // clay, plate, water
+  double fx = 0, fy = 0, p_fluid = 0;
+  int n = 0;
+  for (int i = 0; i < e->particles(); ++i) {
+    if (mat[i] == kPlateClay) fx += m[i] * a[2 * i], fy += m[i] * a[2 * i + 1];
+    if (mat[i] == kPlateWater) p_fluid += p[i], ++n;
+  }
+  p_fluid /= n;
+  const double top = p_fluid * 0.006;  // N/m: the top face's load
+  std::printf("fluid %.2f Pa; force on the block (%.3f, %.3f) N/m, top face's load %.3f N/m\n", p_fluid, fx, fy, top);
+  EXPECT_GT(p_fluid, 450.0);
+  EXPECT_NEAR(fy / -top, 1.0, 0.1);
+  EXPECT_LT(std::fabs(fx), 0.02 * top);
+}

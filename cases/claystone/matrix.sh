@@ -5,14 +5,16 @@
 # them all (saturations, porosity, damage, pressures, Pc against S_g and percolation.md, the table of
 # percolation times). Confinements in the case's scaled Pa (stress scale 5e7): 10, 8, 6, 4 MPa are
 # 0.2, 0.16, 0.12, 0.08 Pa.
-#   [JOBS=N] cases/claystone/matrix.sh OUTDIR [reduced|cell] [poresph binary] [extra poresph run options...]
+#   [JOBS=N] cases/claystone/matrix.sh OUTDIR [reduced|wide|cell] [poresph binary] [extra poresph run options...]
 # A case whose run ended, completed or not (OUTDIR/NAME/summary.json), is kept: delete it to run it again.
 # reduced: the 16 x 24 x 20 voxel crop of the fracture's upper part (reservoirs of 4 voxels),
 #          21,504 particles, to 20 us after percolation (at most 0.5 ms): the size this CPU runs
 #          (VALIDATION.md);
+# wide:    the 22 x 44 x 15 voxel crop holding the pore's whole width (porosity 0.29; the pore touches
+#          no lateral layer), 35,880 particles, to 10 us after percolation: also a CPU size;
 # cell:    the whole 50^3 sample (235,480 particles): a GPU size (add --backend cuda).
 set -euf  # -f: the [..] of the --set values are not file patterns
-out=${1:?usage: matrix.sh OUTDIR [reduced|cell] [poresph] [run options...]}
+out=${1:?usage: matrix.sh OUTDIR [reduced|wide|cell] [poresph] [run options...]}
 size=${2:-reduced}
 poresph=${3:-poresph}
 if [ $# -ge 3 ]; then shift 3; else shift $#; fi
@@ -22,8 +24,11 @@ case $size in
   reduced) crop="--set sample.image.crop.lower=[16,12,30] --set sample.image.crop.upper=[32,36,50] --set sample.reservoir_height=8e-8
                 --set time.end=5e-4 --set time.after_percolation=2e-5 --set output.monitor_interval=2e-6
                 --set output.extract_interval=1e-5 --set visualisation.slab.origin=[2.8e-7,3.6e-7,3.7e-7]" ;;
+  wide) crop="--set sample.image.crop.lower=[12,4,35] --set sample.image.crop.upper=[34,48,50] --set sample.reservoir_height=8e-8
+             --set time.end=5e-4 --set time.after_percolation=1e-5 --set output.monitor_interval=2e-6
+             --set output.extract_interval=1e-5 --set visualisation.slab.origin=[3.8e-7,6e-7,3.1e-7]" ;;
   cell) crop="" ;;
-  *) echo "matrix.sh: size is reduced or cell, not $size" >&2; exit 2 ;;
+  *) echo "matrix.sh: size is reduced, wide or cell, not $size" >&2; exit 2 ;;
 esac
 # Figure sequences and MP4s of the sections (Pazdniakou Fig. 11, Deptulski Fig. 5.11), rendered in situ.
 solid_views="--pipeline phases --pipeline principal_stress --pipeline displacement"

@@ -19,8 +19,11 @@ template <int D, class NB = NeighbourList<D>>
 struct StressForcePass {
   PairContext<D, NB> c;  // the solid's neighbours, kernel, particles, materials
   Real damping = 0;  // zeta (1/s): a -= zeta v
-  // The fluid's traction P_i b_i, b_i = sum_j V_j (g_ij - g_ji) over elastic j, P_i the ambient
-  // pressure (solid/fluid_coupling.hpp): the stresses taken relative to -P_i I.
+  // The fluid's traction P_i b_i, b_i = sum_j V_j (g_ij - g_ji) over the solid's neighbours j, P_i
+  // the ambient pressure (solid/fluid_coupling.hpp): the stresses taken relative to -P_i I. A wall
+  // j (a clamp) counts as the body's continuation, g_ji = -grad_i W_ij (walls have no correction):
+  // b_i then loads the faces the fluid wets and not the face on a plate, where a traction fed by
+  // the pore water's pressure grew into an instability (VALIDATION.md, the wider crop).
   bool traction = false;
   Real hourglass = 0;  // alpha of the hourglass control (solid/hourglass.hpp), 0 for none
   PSPH_HD void operator()(int i) const {
@@ -46,6 +49,8 @@ struct StressForcePass {
         if (traction) t += area * (g_ij - g_ji) * p_i;
         if (hourglass > Real(0))
           f_hg += hourglass_share(c.s, c.mats, c.kern, young_i, i, j, rij, r, solid_sum_volume(c.s, j));
+      } else if (traction) {
+        t += area * (g_ij + gradW) * p_i;
       }
       f += t * solid_sum_volume(c.s, j);
     });
