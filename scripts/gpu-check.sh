@@ -5,8 +5,9 @@
 #      GPU in its list, or a tiny device query (scripts/gpu_query.cu) that cannot use one;
 #   2. configures the solver-only preset with CUDA on (ParaView and the dashboard off), builds
 #      poresph and gpu_tests (-j16), runs the gpu-labelled tests (CPU/CUDA agreement per physics
-#      family), then `poresph bench --backend cuda --json` on the 3D fluid box at 1e6 and 1e7
-#      particles, then, while time is left, the other CUDA benchmarks one by one.
+#      family), then `poresph bench --backend cuda --json --profile` (each pass's share too) on the
+#      3D fluid box at 1e6 and 1e7 particles, then, while time is left, the other CUDA benchmarks
+#      one by one.
 # Header-only dependencies: toml++ (used header-only), CLI11, nlohmann-json, and GoogleTest's
 # sources (the tests' CMake needs it); Thrust/CUB come with CUDA. They are gathered on a Debian 12
 # machine with `scripts/gpu-deps.sh` into build/gpu-deps (ignored by git, ~3 MiB) and carried with
@@ -171,7 +172,7 @@ mkdir -p "$tmp/bench"
 if ((dry)); then backend=cpu; large=(fluid_box_3d_10000); else backend=cuda; large=(fluid_box_3d_1000000 fluid_box_3d_10000000); fi
 parts=()
 for b in "${large[@]}"; do
-  phase "bench $b" 150 "$tmp/bench/$b.json" "$out/bench.log" "$poresph" bench --backend $backend --json "$b" || failed+=("$b")
+  phase "bench $b" 150 "$tmp/bench/$b.json" "$out/bench.log" "$poresph" bench --backend $backend --json --profile "$b" || failed+=("$b")
   parts+=("$tmp/bench/$b.json")
   merge_json "$out/bench-large.json" "${parts[@]}"
 done
@@ -183,7 +184,7 @@ if ((!dry)); then
   for b in $("$poresph" bench --backend cuda --list); do
     [[ " ${large[*]} " == *" $b "* ]] && continue
     if ((budget - (SECONDS - t0) < 10)); then log "bench: no time left for $b and the ones after it"; break; fi
-    phase "bench $b" 60 "$tmp/bench/$b.json" "$out/bench.log" "$poresph" bench --backend cuda --json "$b"
+    phase "bench $b" 60 "$tmp/bench/$b.json" "$out/bench.log" "$poresph" bench --backend cuda --json --profile "$b"
     rest+=("$tmp/bench/$b.json")
     merge_json "$out/bench-rest.json" "${rest[@]}"
   done

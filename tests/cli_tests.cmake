@@ -86,6 +86,12 @@ file(READ ${WORK}/short_run/summary.json summary)
 if(NOT summary MATCHES "\"status\": \"completed\"")
   message(FATAL_ERROR "summary.json does not say completed: ${summary}")
 endif()
+# The run's profile (app/profile_report.hpp): by stage and pass in summary.json, the top lines in log.txt.
+file(READ ${WORK}/short_run/log.txt short_log)
+if(NOT summary MATCHES "\"profile\": {" OR NOT summary MATCHES "\"pass\": \"FluidForcePass\""
+   OR NOT summary MATCHES "\"stage\": \"fluid\"" OR NOT short_log MATCHES "profile: [0-9.]+ % of the wall time")
+  message(FATAL_ERROR "summary.json or log.txt lacks the profile:\n${summary}\n${short_log}")
+endif()
 file(READ ${WORK}/short_run/status.json st)
 if(NOT st MATCHES "\"state\": \"completed\"")
   message(FATAL_ERROR "status.json does not say completed: ${st}")

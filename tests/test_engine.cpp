@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/instability.hpp"
@@ -308,4 +309,44 @@ TEST(Engine, TheBackgroundPressureRisesAtItsRate) {
   }
   EXPECT_LT(worst, 1e-2 * rate * t);  // measured 0.2 %: the shear wave's density varies
   EXPECT_LT(restart_diff, 1e-6 * rate * t);  // a restart without the rise would be rate t / 2 off
+}
+
+namespace profile_names {
+template <int D>
+struct SomePass {
+  void operator()(int) const {}
+};
+}  // namespace profile_names
+
+// The profile (core/pass_profile.hpp) names a pass after its functor, without namespaces or
+// template arguments; a lambda after the function it is in.
+TEST(Engine, ProfileNamesPassesAfterTheirFunctors) {
+  EXPECT_EQ(pass_name_of<profile_names::SomePass<3>>(), "SomePass");
+  auto lambda = [](int) {};
+  EXPECT_EQ(pass_name_of<decltype(lambda)>(), "TestBody()::{lambda(int)#1}");
+}
+
+// A pure fluid's steps: each pass under its stage, once a step for the once-a-step passes, and no
+// stage that the case does not need (solid, damage, coupling, interface).
+TEST(Engine, ProfileHasTheStagesACaseNeedsOnly) {
+  auto e = make_engine(shear_box(24), "cpu");
+  e->profile().clear();
+  for (int s = 0; s < 5; ++s) e->step(1.0);
+  std::vector<std::string> stages;
+  for (const PassTime& t : e->profile().stages()) {
+    stages.push_back(t.stage);
+    EXPECT_GT(t.seconds, 0.0) << t.stage;
+  }
+  for (const char* s : {"fluid", "integrate", "time step", "health check"})
+    EXPECT_NE(std::find(stages.begin(), stages.end(), s), stages.end()) << s;
+  for (const char* s : {"solid", "damage", "coupling", "interface"})
+    EXPECT_EQ(std::find(stages.begin(), stages.end(), s), stages.end()) << s;
+  int density = 0;
+  for (const PassTime& t : e->profile().passes()) {
+    if (t.pass != "DensitySummationPass") continue;
+    ++density;
+    EXPECT_EQ(t.stage, "fluid");
+    EXPECT_EQ(t.calls, 5);
+  }
+  EXPECT_EQ(density, 1);
 }

@@ -1,7 +1,9 @@
 // Fluid-solid coupling (solid/fluid_coupling.hpp) and the solids' damping (solid/damping.hpp):
 // exact momentum exchange of the pair coupling, the traction coupling's exact equilibrium under a
 // uniform pressure, and the energy the damping takes.
+#include <chrono>
 #include <cmath>
+#include <map>
 
 #include <gtest/gtest.h>
 
@@ -258,4 +260,22 @@ TEST(FluidSolid, TractionPressesABodyOntoItsPlate) {
   EXPECT_GT(p_fluid, 450.0);
   EXPECT_NEAR(fy / -top, 1.0, 0.1);
   EXPECT_LT(std::fabs(fx), 0.02 * top);
+}
+
+// The coupled step's profile (core/pass_profile.hpp): the solid's force pass under its stage once
+// a step, the fluid's reaction under the coupling's, and the passes' time within the steps' own.
+TEST(FluidSolid, ProfileNamesEachStagesPasses) {
+  auto e = engine_of(kBlock);
+  e->profile().clear();
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int s = 0; s < 5; ++s) e->step(1.0);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::map<std::string, PassTime> by_pass;
+  for (const PassTime& t : e->profile().passes()) by_pass[t.pass] = t;
+  EXPECT_EQ(by_pass["StressForcePass"].stage, "solid");
+  EXPECT_EQ(by_pass["StressForcePass"].calls, 5);
+  EXPECT_EQ(by_pass["FluidOnSolidPass"].stage, "coupling");
+  EXPECT_EQ(by_pass["FluidForcePass"].stage, "fluid");
+  EXPECT_GT(e->profile().seconds(), 0.0);
+  EXPECT_LE(e->profile().seconds(), wall);
 }

@@ -14,6 +14,7 @@
 #include <exception>
 #include <functional>
 #include <limits>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -161,6 +162,15 @@ int compare(const AgreementCase& ac, const std::string& against, int steps) {
   // not failed, since the fields are compared by id.
   const bool same_order = ida == idb;
   std::printf("  %-22s %s\n", "particle order (ids)", same_order ? "same" : "differs (fields compared by id)");
+  // The profiles (core/pass_profile.hpp) name the same passes under the same stages.
+  auto passes = [](Engine& e) {
+    std::set<std::string> out;
+    for (const PassTime& t : e.profile().passes()) out.insert(t.stage + ": " + t.pass);
+    return out;
+  };
+  const bool same_passes = passes(*ref) == passes(*other);
+  std::printf("  %-22s %s\n", "profiled passes", same_passes ? "same" : "FAIL (they differ)");
+  failures += !same_passes;
   for (const Compared& f : ac.fields) {
     const auto a = values(*ref, f.field, ida), b = values(*other, f.field, idb);
     double scale = 0, diff = a.size() == b.size() ? 0 : std::numeric_limits<double>::infinity();

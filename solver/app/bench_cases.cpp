@@ -125,11 +125,13 @@ BenchResult run_bench(const BenchSpec& spec, const std::string& backend, std::os
   r.threads = backend == "cpu" ? CpuBackend::threads() : 1;
   r.neighbours = e->mean_neighbours();
   for (int s = 0; s < 10; ++s) e->step(1e30);  // warm-up (first touch, list capacity)
+  e->profile().clear();
   const auto t0 = std::chrono::steady_clock::now();
   for (int s = 0; s < spec.steps; ++s) e->step(1e30);
   e->stats();  // synchronises the device
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.steps = spec.steps;
+  r.profile = e->profile();
   r.particle_steps_per_second = double(r.particles) * r.steps / r.seconds;
   r.fluid_particle_steps_per_second = double(fluid) * r.steps / r.seconds;
   // Neighbour interactions (pairs within the support) of the fluid and elastic particles per second.

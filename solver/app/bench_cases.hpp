@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/pass_profile.hpp"
 #include "scene/case_file.hpp"
 
 namespace psph {
@@ -26,6 +27,7 @@ struct BenchResult {
   long steps = 0;
   double seconds = 0, particle_steps_per_second = 0, fluid_particle_steps_per_second = 0, neighbours = 0,
          interactions_per_second = 0;
+  PassProfile profile;  // the timed steps' passes (core/pass_profile.hpp)
 };
 
 std::vector<BenchSpec> bench_specs(const std::string& backend, bool quick);

@@ -9,6 +9,7 @@
 #include "app/bench_cases.hpp"
 #include "app/bench_stability.hpp"
 #include "app/commands.hpp"
+#include "app/profile_report.hpp"
 
 namespace psph {
 
@@ -63,7 +64,7 @@ int stability(bool json, const std::string& backend, bool quick, const std::vect
 }  // namespace
 
 int cmd_bench(const std::vector<std::string>& names, bool json, const std::string& backend, bool quick,
-              bool accuracy_sweep, bool stability_sweep_) {
+              bool accuracy_sweep, bool stability_sweep_, bool profile) {
   if (accuracy_sweep) return accuracy(json, backend, quick);
   if (stability_sweep_) return stability(json, backend, quick, names);
   std::vector<BenchSpec> specs;
@@ -99,6 +100,8 @@ int cmd_bench(const std::vector<std::string>& names, bool json, const std::strin
                    {"neighbours_per_particle", r.neighbours},
                    {"interactions_per_second", r.interactions_per_second},
                    {"threads", r.threads}});
+    PassProfile none;
+    if (profile) out.back()["profile"] = profile_json(r.profile, none, r.seconds);
     if (!json) {
       char line[400];
       std::snprintf(line, sizeof line,
@@ -108,6 +111,8 @@ int cmd_bench(const std::vector<std::string>& names, bool json, const std::strin
                     r.fluid_particle_steps_per_second, r.particle_steps_per_second, r.interactions_per_second,
                     r.neighbours);
       std::cout << line << std::endl;
+      if (profile)
+        for (const std::string& l : profile_lines(r.profile, none, r.seconds, 12)) std::cout << l << "\n";
     }
   }
   if (json) std::cout << out.dump(2) << "\n";

@@ -35,8 +35,9 @@ int cmd_validate(const std::vector<std::string>& names, bool full, bool json, co
 // One line per validation case: its name, a tab, its description (the CTest validation tests are
 // generated from it: tests/list_validations.cmake).
 int cmd_validate_list();
-// `names`: benchmarks to run (default all); an unknown name is exit 2.
+// `names`: benchmarks to run (default all); an unknown name is exit 2. `profile`: each benchmark's
+// time by stage and pass too (app/profile_report.hpp).
 int cmd_bench(const std::vector<std::string>& names, bool json, const std::string& backend, bool quick,
-              bool accuracy, bool stability);
+              bool accuracy, bool stability, bool profile);
 
 }  // namespace psph

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "app/interrupts.hpp"
+#include "app/profile_report.hpp"
 #include "image/image_report.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/durable_file.hpp"
@@ -203,14 +204,28 @@ void RunDriver::loop() {
 }
 
 void RunDriver::outputs_due() {
+  static const std::string monitors = "monitors", extracts = "extracts", figures = "in-situ figures",
+                           checkpoints = "checkpoints";
+  const ProfileRecording recording(outputs_);
+  const StageScope scope("output");
   const double t = engine_->time();
-  if (mon_.due(t)) monitor(), mon_.pass(t);
+  if (mon_.due(t)) {
+    const HostPassClock clock(monitors);
+    monitor(), mon_.pass(t);
+  }
   if (ext_.due(t)) {
+    const HostPassClock clock(extracts);
     if (extracts_) writer_->write(*engine_);
     ext_.pass(t);
   }
-  if (insitu_->active() && vis_.due(t)) insitu_->output(*engine_), vis_.pass(t);
-  if (ck_.due(t)) checkpoint(), ck_.pass(t);
+  if (insitu_->active() && vis_.due(t)) {
+    const HostPassClock clock(figures);
+    insitu_->output(*engine_), vis_.pass(t);
+  }
+  if (ck_.due(t)) {
+    const HostPassClock clock(checkpoints);
+    checkpoint(), ck_.pass(t);
+  }
 }
 
 void RunDriver::progress_line() {
@@ -331,6 +346,8 @@ void RunDriver::finish() {
     j["insitu"] = insitu_->stats(wall);
     log(insitu_->report(wall));
   }
+  j["profile"] = profile_json(engine_->profile(), outputs_, wall);
+  for (const std::string& l : profile_lines(engine_->profile(), outputs_, wall, 8)) log(l);
   wrote([&] { rd_->write_summary(j); });
   wrote([&] { supervision_->finish(*engine_, status_, diagnostic_, wall); });
   if (dashboard_) {

@@ -70,6 +70,7 @@ class RunDriver {
   std::unique_ptr<TwoPhaseMonitor> two_phase_;
   std::unique_ptr<RunSupervision> supervision_;
   std::unique_ptr<DashboardServer> dashboard_;
+  PassProfile outputs_;  // the time writing monitors, extracts, figures, checkpoints (app/profile_report.hpp)
   bool extracts_ = false, paused_ = false, stop_ = false;
   double dt_mon_ = 0, dt_vis_ = 0, dt_ext_ = 0;
   OutputClock mon_{1, 0}, ext_{1, 0}, ck_{1, 0}, vis_{1, 0};

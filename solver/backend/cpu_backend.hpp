@@ -1,5 +1,6 @@
 #pragma once
-// OpenMP backend: memory, launching, sorting and reductions on the host. Physics never lives here.
+// OpenMP backend: memory, launching, sorting and reductions on the host, each launch timed into the
+// focused profile (core/pass_profile.hpp). Physics never lives here.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -8,6 +9,8 @@
 #include <new>
 #include <string>
 #include <vector>
+
+#include "core/pass_profile.hpp"
 
 #if defined(_OPENMP)
 #include <omp.h>
@@ -57,6 +60,7 @@ struct CpuBackend {
 
   template <class F>
   static void for_each(int n, const F& f) {
+    const HostPassClock clock(pass_name_of<F>());
 #pragma omp parallel for schedule(dynamic, 256)
     for (int i = 0; i < n; ++i) f(i);
   }
@@ -64,6 +68,7 @@ struct CpuBackend {
   // max over i of f(i); -inf for n = 0.
   template <class T, class F>
   static T max_of(int n, const F& f) {
+    const HostPassClock clock(pass_name_of<F>());
     T m = std::numeric_limits<T>::lowest();
 #pragma omp parallel for schedule(static) reduction(max : m)
     for (int i = 0; i < n; ++i) m = std::max(m, f(i));
@@ -72,6 +77,7 @@ struct CpuBackend {
   template <class T, class F>
   static T sum_of(int n, const F& f) {
     // Fixed-order blocked sum, so the result does not depend on the thread count.
+    const HostPassClock clock(pass_name_of<F>());
     constexpr int block = 4096;
     const int nb = (n + block - 1) / block;
     std::vector<T> part(static_cast<std::size_t>(nb), T{});
@@ -89,6 +95,8 @@ struct CpuBackend {
 
   // Stable counting sort of particles by cell key: perm[new] = old; cells get [start, end).
   static void sort_by_cell(int* keys, int n, int ncells, int* perm, int* cell_start, int* cell_end) {
+    static const std::string name = "sort_by_cell";
+    const HostPassClock clock(name);
     std::fill(cell_end, cell_end + ncells, 0);
     for (int i = 0; i < n; ++i) ++cell_end[keys[i]];
     int acc = 0;

@@ -15,6 +15,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/pass_profile.hpp"
+
 namespace psph {
 
 inline void cuda_check(cudaError_t e, const char* what, const char* file, int line) {
@@ -42,6 +44,39 @@ template <class T, class F>
 struct ApplyIndex {
   F f;
   __host__ __device__ T operator()(int i) const { return f(i); }
+};
+
+// Times one launch with a pair of events into the focused profile, if any: read when the profile
+// resolves them (core/pass_profile.hpp), so that the launch is not waited for.
+class DevicePassClock {
+ public:
+  explicit DevicePassClock(const std::string& pass) : focus_(profile_focus()), pass_(pass) {
+    if (!focus_.profile) return;
+    events_ = new cudaEvent_t[2];
+    PSPH_CUDA(cudaEventCreate(&events_[0]));
+    PSPH_CUDA(cudaEventCreate(&events_[1]));
+    PSPH_CUDA(cudaEventRecord(events_[0]));
+  }
+  ~DevicePassClock() {
+    if (!focus_.profile) return;
+    cudaEventRecord(events_[1]);  // no throw from destructors
+    focus_.profile->defer(focus_.stage, &pass_, events_, &seconds_between);
+  }
+  DevicePassClock(const DevicePassClock&) = delete;
+  DevicePassClock& operator=(const DevicePassClock&) = delete;
+
+ private:
+  static double seconds_between(void* handle) {
+    cudaEvent_t* e = static_cast<cudaEvent_t*>(handle);
+    float ms = 0;
+    if (cudaEventSynchronize(e[1]) != cudaSuccess || cudaEventElapsedTime(&ms, e[0], e[1]) != cudaSuccess) ms = 0;
+    cudaEventDestroy(e[0]), cudaEventDestroy(e[1]);
+    delete[] e;
+    return 1e-3 * ms;
+  }
+  ProfileFocus focus_;
+  const std::string& pass_;
+  cudaEvent_t* events_ = nullptr;
 };
 
 struct CudaBackend {
@@ -83,17 +118,20 @@ struct CudaBackend {
   template <class F>
   static void for_each(int n, const F& f) {
     if (n <= 0) return;
+    const DevicePassClock clock(pass_name_of<F>());
     for_each_kernel<<<(n + block - 1) / block, block>>>(n, f);
     PSPH_CUDA(cudaGetLastError());
   }
   template <class T, class F>
   static T max_of(int n, const F& f) {
+    const DevicePassClock clock(pass_name_of<F>());
     return thrust::transform_reduce(thrust::device, thrust::counting_iterator<int>(0),
                                     thrust::counting_iterator<int>(n), ApplyIndex<T, F>{f},
                                     std::numeric_limits<T>::lowest(), thrust::maximum<T>());
   }
   template <class T, class F>
   static T sum_of(int n, const F& f) {
+    const DevicePassClock clock(pass_name_of<F>());
     return thrust::transform_reduce(thrust::device, thrust::counting_iterator<int>(0),
                                     thrust::counting_iterator<int>(n), ApplyIndex<T, F>{f}, T{},
                                     thrust::plus<T>());
@@ -101,6 +139,8 @@ struct CudaBackend {
 
   // Stable sort by cell key (keys are overwritten with the sorted keys); perm[new] = old.
   static void sort_by_cell(int* keys, int n, int ncells, int* perm, int* cell_start, int* cell_end) {
+    static const std::string name = "sort_by_cell";
+    const DevicePassClock clock(name);
     fill_zero(cell_start, sizeof(int) * ncells);
     fill_zero(cell_end, sizeof(int) * ncells);
     if (n == 0) return;

@@ -4,6 +4,7 @@
 // buffers take the velocity of the outgoing characteristic, then their imposed state.
 #include "boundary/open_boundary.hpp"
 #include "core/open_boundary_zone.hpp"
+#include "core/pass_profile.hpp"
 #include "stage/step_context.hpp"
 
 namespace psph {
@@ -28,6 +29,7 @@ class OpenBoundaryStage {
   }
 
   void convert_inlet(StepContext<D, B>& cx) const {
+    const StageScope scope("open boundary");
     if (active_) B::for_each(cx.n(), ConvertInletFluid<D>{cx.view(), cx.mats});
   }
 
@@ -38,6 +40,7 @@ class OpenBoundaryStage {
   // until the fluid next to a buffer has the buffer's pressure.
   // Runs after the step is chosen: the buffers' new velocities differ from the last ones by du << c.
   void buffer_velocity(StepContext<D, B>& cx, double dt) const {
+    const StageScope scope("open boundary");
     if (!active_) return;
     const ParticleView<D> v = cx.view();
     Real u_band[2] = {0, 0}, du[2] = {0, 0};
@@ -54,6 +57,7 @@ class OpenBoundaryStage {
   }
 
   void buffer_state(StepContext<D, B>& cx) const {
+    const StageScope scope("open boundary");
     if (active_) B::for_each(cx.n(), SetBufferState<D>{cx.view(), cx.mats});
   }
 

@@ -12,6 +12,7 @@
 // `ghost_particles`. All are registered fields: checkpoints and reorderings carry them.
 #include <vector>
 
+#include "core/pass_profile.hpp"
 #include "damage/damage_options.hpp"
 #include "damage/damage_parameters.hpp"
 #include "damage/damage_pass.hpp"
@@ -70,6 +71,7 @@ class DamageStage {
 
   // After the strain pass, before the forces.
   void update(StepContext<D, B>& cx) {
+    const StageScope scope("damage");
     if (!active_) return;
     B::for_each(cx.n(), DamageUpdatePass<D>{cx.view(), cx.mats, law_, damage_.data(), driving_force_.data(),
                                             bulk_.size() ? bulk_.data() : nullptr, bulk_.size() ? shear_.data() : nullptr,
@@ -79,17 +81,21 @@ class DamageStage {
 
   // Ghosts: a list build is due (a particle became a ghost in the last damage pass).
   bool ghosts_pending(StepContext<D, B>& cx) const {
+    const StageScope scope("damage");
     return cx.s.ghost.size() && cx.template max_of<int>(PendingGhostOf<D>{cx.view()}) > 0;
   }
   // Before each list build, and after the forces.
   void retire_ghosts(StepContext<D, B>& cx) const {
+    const StageScope scope("damage");
     if (cx.s.ghost.size()) B::for_each(cx.n(), RetireGhosts<D>{cx.view()});
   }
   void pin_ghosts(StepContext<D, B>& cx) const {
+    const StageScope scope("damage");
     if (cx.s.ghost.size()) B::for_each(cx.n(), PinGhosts<D>{cx.view()});
   }
 
   void monitors(StepContext<D, B>& cx, std::vector<MonitorValue>& out) const {
+    const StageScope scope("damage");
     if (!active_) return;
     if (cx.s.ghost.size()) out.push_back({"ghost_particles", double(cx.template sum_of<Real>(GhostOf<D>{cx.view()}))});
     out.push_back({"damaged_particles", double(cx.template sum_of<Real>(DamagedOf{damage_.data()}))});

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/instability.hpp"
+#include "core/pass_profile.hpp"
 #include "rigid/rigid_bodies.hpp"
 #include "engine/scene.hpp"
 #include "stage/monitor_value.hpp"
@@ -46,6 +47,9 @@ class Engine {
   // The stages' monitors at the current state (elastic energy, rigid bodies' motion...), named:
   // the same names, in the same order, at every call of a run.
   virtual std::vector<MonitorValue> monitors() = 0;
+  // Where the steps' and monitors' time went, by pass and stage, since the engine was made
+  // (core/pass_profile.hpp).
+  virtual PassProfile& profile() = 0;
   // The rigid bodies' motion (rigid/rigid_bodies.hpp), in the case's order of their geometries.
   virtual std::vector<RigidBodyState> rigid_bodies() const { return {}; }
   // Runs to t_end (exactly).

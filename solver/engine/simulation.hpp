@@ -56,9 +56,11 @@ class Simulation final : public Engine {
   std::string backend() const override { return B::name; }
   std::string device() const override { return B::device_name(); }
   std::vector<RigidBodyState> rigid_bodies() const override { return rigid_.bodies().all(); }
+  PassProfile& profile() override { return profile_; }
 
   // The step: kick, drift, forces at the new positions (eqs. 48, 49).
   void step(double t_stop) override {
+    const ProfileRecording recording(profile_);
     const double dt = next_dt(t_stop);
     ramp(t_ + dt);  // the forces evaluated in this step are those at its end
     open_.buffer_velocity(cx_, dt);
@@ -106,6 +108,8 @@ class Simulation final : public Engine {
   void restore(const Checkpoint& c) override;
   StepStats stats() override;
   std::vector<MonitorValue> monitors() override {
+    const ProfileRecording recording(profile_);
+    const StageScope scope("monitors");
     std::vector<MonitorValue> out;
     elastic_.monitors(cx_, out, damage_.moduli());
     damage_.monitors(cx_, out);
@@ -176,10 +180,12 @@ class Simulation final : public Engine {
   // Rigid particles move with their bodies (rigid/rigid_stage.hpp): the same kicks, then their
   // particles are placed.
   void kick(double h) {
+    const StageScope scope("integrate");
     B::for_each(cx_.n(), KickPass<D>{cx_.view(), cx_.mats, Real(h)});
     rigid_.kick(cx_, h);
   }
   void drift(double dt) {
+    const StageScope scope("integrate");
     B::for_each(cx_.n(), DriftPass<D>{cx_.view(), cx_.grid, Real(dt), cx_.continuity});
     rigid_.drift(cx_, dt);
   }
@@ -217,6 +223,7 @@ class Simulation final : public Engine {
   long steps_ = 0;
   std::string dt_limit_ = "none";
   std::vector<std::string> material_names_;
+  PassProfile profile_;
 };
 
 }  // namespace psph

@@ -60,6 +60,7 @@ void Simulation<D, B>::setup_rigid(const Scene& sc) {
 // The adaptive step from every limit (integrate/timestep.hpp), landing exactly on t_stop.
 template <int D, class B>
 double Simulation<D, B>::next_dt(double t_stop) {
+  const StageScope scope("time step");
   double dt = opt_.fixed_dt;
   dt_limit_ = "fixed";
   if (!(dt > 0)) {
@@ -89,6 +90,7 @@ double Simulation<D, B>::next_dt(double t_stop) {
 // density check is opt-in (solver.max_density_deviation).
 template <int D, class B>
 void Simulation<D, B>::check_health() {
+  const StageScope scope("health check");
   const double limit = opt_.max_density_deviation > 0 ? opt_.max_density_deviation : 1e30;
   const BadParticle<D> check{cx_.view(), cx_.grid, cx_.mats, Real(limit)};
   const int bad = cx_.template max_of<int>(check);
@@ -125,6 +127,8 @@ std::string Simulation<D, B>::culprit(const BadParticle<D>& bad, int code) {
 
 template <int D, class B>
 StepStats Simulation<D, B>::stats() {
+  const ProfileRecording recording(profile_);  // the monitors' cost, beside the step's
+  const StageScope scope("monitors");
   StepStats st;
   const ParticleView<D> v = cx_.view();
   st.v_max = cx_.template max_of<Real>(SpeedOf<D>{v});

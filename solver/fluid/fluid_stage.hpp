@@ -8,6 +8,7 @@
 #include "boundary/wall_pressure.hpp"
 #include "boundary/wall_velocity.hpp"
 #include "core/instability.hpp"
+#include "core/pass_profile.hpp"
 #include "fluid/body_force_region.hpp"
 #include "fluid/continuity.hpp"
 #include "fluid/density.hpp"
@@ -48,6 +49,7 @@ class FluidStage {
 
   // Each material's background pressure at time t.
   void ramp_pressure(StepContext<D, B>& cx, double t) const {
+    const StageScope scope("fluid");
     if (o_.background_pressure_rate == 0) return;
     for (int m = 0; m < cx.mats.count; ++m)
       cx.mats.m[m].background_pressure = Real(background_pressure_[m] + o_.background_pressure_rate * t);
@@ -55,6 +57,7 @@ class FluidStage {
 
   // Body-force regions at time t, each scaled by its ramp factor.
   void ramp_regions(StepContext<D, B>& cx, double t) const {
+    const StageScope scope("fluid");
     for (int r = 0; r < cx.mats.region_count; ++r) {
       const double f = ramp_factor(t, regions_[r].ramp_time);
       for (int d = 0; d < D; ++d) cx.mats.region[r].acceleration[d] = Real(f * regions_[r].acceleration[d]);
@@ -63,11 +66,13 @@ class FluidStage {
 
   // The walls' reference density: their initial summed density (lists of every particle built).
   void wall_rest_density(StepContext<D, B>& cx) const {
+    const StageScope scope("fluid");
     density(cx, true);
     B::for_each(cx.n(), SetWallRestDensity<D>{cx.view(), cx.mats});
   }
   // Density by summation, or the pressure of the integrated density.
   void density(StepContext<D, B>& cx, bool all_particles = false) const {
+    const StageScope scope("fluid");
     if (cx.continuity) return B::for_each(cx.n(), EquationOfStatePass<D>{cx.view(), cx.mats});
     const bool normalised = o_.density == DensityMethod::NormalisedSummation;
     const bool number = o_.density == DensityMethod::NumberSummation;
@@ -77,6 +82,7 @@ class FluidStage {
   }
   // d rho/dt with the velocity that drifts the particles (fluid/continuity.hpp).
   void density_rate(StepContext<D, B>& cx) const {
+    const StageScope scope("fluid");
     if (!cx.continuity) return;
     B::for_each(cx.n(), ContinuityPass<D>{cx.pairs(), Real(o_.density_diffusion),
                                           Real(cx.smoothing_length), o_.wall_pressure == WallPressure::Summation});
@@ -84,12 +90,14 @@ class FluidStage {
 
   // Walls and solids present a pressure and a no-slip velocity (boundary/, solid/fluid_coupling.hpp).
   void present_walls(StepContext<D, B>& cx) const {
+    const StageScope scope("fluid");
     if (cx.walls && o_.wall_pressure == WallPressure::Extrapolated)
       B::for_each(cx.n(), WallPressurePass<D>{cx.pairs()});
     if (cx.walls || cx.solids())
       B::for_each(cx.n(), WallVelocityPass<D>{cx.pairs(), o_.wall_noslip});
   }
   void forces(StepContext<D, B>& cx) const {
+    const StageScope scope("fluid");
     B::for_each(cx.n(), FluidForcePass<D>{cx.pairs(), fo_});
   }
 
@@ -98,6 +106,7 @@ class FluidStage {
   // `when()` says when, for the message of a solve that fails (built only then).
   template <class When>
   void viscous_step(StepContext<D, B>& cx, double dt, const When& when) {
+    const StageScope scope("fluid");
     if (!o_.implicit_viscosity || !cx.fluid) return;
     const int n = cx.n();
     const ParticleView<D> v = cx.view();

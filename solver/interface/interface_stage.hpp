@@ -2,6 +2,7 @@
 // The interface stage (two fluids with surface tension): the smoothed colour, the interface normal
 // with the walls' wetting, and the curvature that the fluid's force pass turns into the capillary
 // force (interface/surface_tension.hpp, interface/wall_wetting.hpp).
+#include "core/pass_profile.hpp"
 #include "interface/interface_options.hpp"
 #include "interface/surface_tension.hpp"
 #include "interface/wall_wetting.hpp"
@@ -28,6 +29,7 @@ class InterfaceStage {
 
   // Colour, normal (twice more near walls with geometric wetting), curvature.
   void curvature(StepContext<D, B>& cx) const {
+    const StageScope scope("interface");
     if (!active()) return;
     const int n = cx.n();
     const PairContext<D> pc = cx.pairs();

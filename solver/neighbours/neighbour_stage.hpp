@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "backend/device_array.hpp"
+#include "core/pass_profile.hpp"
 #include "neighbours/list_passes.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/fluid_proximity.hpp"
@@ -71,6 +72,7 @@ class NeighbourStage {
   // wall's whole neighbourhood to set its rest density); otherwise walls far from the fluid get none.
   void build(ParticleState<D, B>& s, const CellGrid<D>& grid, const MaterialTable<D>& mats, const ListNeeds& needs,
              bool every_particle) {
+    const StageScope scope("neighbours");
     sort_and_list(s, grid, mats, needs, every_particle);
     B::copy(x_build_.data(), s.x.data(), sizeof(Vec<D>) * s.size());
   }
@@ -79,6 +81,7 @@ class NeighbourStage {
   // already, so the sort keeps it), then the current positions back.
   void build_as_saved(ParticleState<D, B>& s, const CellGrid<D>& grid, const MaterialTable<D>& mats,
                       const ListNeeds& needs) {
+    const StageScope scope("neighbours");
     s.x.swap(x_build_);  // the field "list_positions" is permuted with the state meanwhile
     sort_and_list(s, grid, mats, needs, false);
     s.x.swap(x_build_);
@@ -86,6 +89,7 @@ class NeighbourStage {
 
   // The lists hold every pair within R as long as no particle moved by half the skin.
   bool expired(const ParticleState<D, B>& s, const CellGrid<D>& grid) const {
+    const StageScope scope("neighbours");
     const double half_skin = 0.5 * (radius_ - support_);
     if (half_skin <= 0) return true;
     return B::template max_of<Real>(s.size(), DisplacementSinceBuild<D>{grid, s.x.data(), x_build_.data()}) >= half_skin;

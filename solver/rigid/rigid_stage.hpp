@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "backend/device_array.hpp"
+#include "core/pass_profile.hpp"
 #include "rigid/rigid_bodies.hpp"
 #include "rigid/rigid_body.hpp"
 #include "stage/monitor_value.hpp"
@@ -50,22 +51,26 @@ class RigidStage {
 
   // With the particles' kick and drift: the bodies move, their particles take their motion.
   void kick(StepContext<D, B>& cx, double h) {
+    const StageScope scope("rigid");
     if (!active()) return;
     bodies_.kick(load_, h);
     place(cx);
   }
   void drift(StepContext<D, B>& cx, double dt) {
+    const StageScope scope("rigid");
     if (!active()) return;
     bodies_.drift(dt);
     place(cx);
   }
 
   void contact(StepContext<D, B>& cx) const {
+    const StageScope scope("rigid");
     if (active()) B::for_each(cx.n(), RigidContactPass<D>{cx.list(), cx.view(), cx.mats, Real(cx.spacing)});
   }
 
   // Each body's force and torque from its particles' accelerations (eqs. 63, 65).
   void sum_loads(StepContext<D, B>& cx) {
+    const StageScope scope("rigid");
     if (!active()) return;
     load_.assign(bodies_.count(), RigidLoad{});
     for (int b = 0; b < bodies_.count(); ++b) {

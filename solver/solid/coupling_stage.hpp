@@ -1,6 +1,7 @@
 #pragma once
 // The fluid-solid coupling stage (solid/fluid_coupling.hpp): elastic and rigid solids present a
 // pressure to the fluid before its force pass, and take the fluid's reaction after their own.
+#include "core/pass_profile.hpp"
 #include "solid/fluid_coupling.hpp"
 #include "solid/solid_options.hpp"
 #include "stage/step_context.hpp"
@@ -24,10 +25,12 @@ class CouplingStage {
 
   // `moduli`: the damaged moduli, if any (damage/damage_stage.hpp).
   void present_solids(StepContext<D, B>& cx, ParticleModuli moduli) const {
+    const StageScope scope("coupling");
     if (active_) B::for_each(cx.n(), SolidInterfacePressurePass<D>{cx.pairs(), mode_, moduli});
   }
   // `fo`: the fluid's force options (the reaction is the fluid's pair force, computed again).
   void fluid_on_solids(StepContext<D, B>& cx, const FluidForceOptions& fo) const {
+    const StageScope scope("coupling");
     if (active_)
       B::for_each(cx.n(), FluidOnSolidPass<D>{cx.pairs(), fo, mode_ != SolidCoupling::Traction});
   }

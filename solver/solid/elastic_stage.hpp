@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/pass_profile.hpp"
 #include "neighbours/reference_list.hpp"
 #include "solid/artificial_viscosity.hpp"
 #include "solid/clamp.hpp"
@@ -64,6 +65,7 @@ class ElasticStage {
   // solid records its lists of t = 0, and after every build drops the damage ghosts retired from the
   // current lists; a small-strain solid keeps its corrections (solid_sum_volume: rest volumes).
   void lists_built(StepContext<D, B>& cx) {
+    const StageScope scope("solid");
     if (!active_) return;
     corrections_kept_ = !large_strain();
     if (corrections_kept_) B::for_each(cx.n(), SolidCorrectionPass<D>{cx.pairs(cx.reference_list())});
@@ -83,6 +85,7 @@ class ElasticStage {
   // Displacements and, where the step needs them, strain and stress (the fluid reads the solid's
   // volume change).
   void strain(StepContext<D, B>& cx) const {
+    const StageScope scope("solid");
     if (!active_) return;
     B::for_each(cx.n(), DisplacementPass<D>{cx.view(), cx.grid});
     if (cx.walls) B::for_each(cx.n(), ClampDisplacementPass<D>{cx.view(), cx.mats});
@@ -94,6 +97,7 @@ class ElasticStage {
 
   // `moduli`: per-particle moduli of the displacement form (damage/damage_stage.hpp), if any.
   void forces(StepContext<D, B>& cx, ParticleModuli moduli) const {
+    const StageScope scope("solid");
     if (!active_) return;
     const Real zeta = Real(o_.solid_damping_rate);
     const bool traction = cx.fluid && o_.solid_coupling == SolidCoupling::Traction;
@@ -112,11 +116,13 @@ class ElasticStage {
 
   // The damping's power at the end of the step, times dt.
   void end_of_step(StepContext<D, B>& cx, double dt) {
+    const StageScope scope("solid");
     if (active_ && o_.solid_damping_rate > 0)
       dissipated_ += dt * cx.template sum_of<Real>(DampingPowerOf<D>{cx.view(), cx.mats, Real(o_.solid_damping_rate)});
   }
 
   double elastic_energy(StepContext<D, B>& cx, ParticleModuli moduli) const {
+    const StageScope scope("solid");
     if (!active_) return 0;
     const ParticleView<D> v = cx.view();
     return stress_form() ? cx.template sum_of<Real>(StrainEnergyOf<D>{v, cx.mats})
@@ -125,6 +131,7 @@ class ElasticStage {
   double dissipated_energy() const { return dissipated_; }
 
   void monitors(StepContext<D, B>& cx, std::vector<MonitorValue>& out, ParticleModuli moduli) const {
+    const StageScope scope("solid");
     if (!active_) return;
     out.push_back({"elastic_energy", elastic_energy(cx, moduli)});
     if (o_.solid_damping_rate > 0) out.push_back({"dissipated_energy", dissipated_});
@@ -133,6 +140,7 @@ class ElasticStage {
   // The displacement form needs no strain or stress in its step (unless a later stage does): computed
   // when asked for, once per state.
   void prepare_field(StepContext<D, B>& cx, const std::string& name, long step) {
+    const StageScope scope("solid");
     if (!active_ || stress_form() || strain_each_step_ || (name != "strain" && name != "stress") || strain_step_ == step) return;
     B::for_each(cx.n(), StrainStressPass<D>{cx.pairs(cx.reference_list()), corrections_kept_});
     strain_step_ = step;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/pass_profile.hpp"
 #include "solid/solid_load.hpp"
 #include "stage/ramp.hpp"
 #include "stage/step_context.hpp"
@@ -25,6 +26,7 @@ class SolidLoadStage {
   }
 
   void apply(StepContext<D, B>& cx) const {
+    const StageScope scope("solid loads");
     if (active()) B::for_each(cx.n(), SolidLoadPass<D>{cx.view(), at(cx.force_time, cx.spacing)});
   }
 
