@@ -14,6 +14,8 @@ namespace fs = std::filesystem;
 namespace psph {
 namespace {
 
+constexpr double kCpuRenderShare = 0.05;
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -21,7 +23,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }  // namespace
 
 InSituSession::InSituSession(const Case& c, const std::vector<std::string>& cli, const std::string& live)
-    : live_(live) {
+    : live_(live), every_frame_(c.visualisation.every_frame) {
   std::vector<std::string> names = c.visualisation.pipelines;
   names.insert(names.end(), cli.begin(), cli.end());
   if (names.empty() && !live.empty()) names.push_back("live");
@@ -53,13 +55,16 @@ std::vector<std::string> InSituSession::stage(Engine& e) {
 }
 
 void InSituSession::hand_over(Engine& e) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const long frame = frames_++;
-  insitu_->execute(frame_, frame, e.time());
-  coprocess_s_ += seconds_since(t0);
+  render_->submit(frame_, e.steps(), e.time());
   last_step_ = e.steps();
+}
+
+void InSituSession::rendered(long frame, long step, double time, double seconds) {
+  if (frame == 0) first_frame_s_ = seconds;
+  coprocess_s_ += seconds;
+  frames_ = frame + 1;
   // The frame's images are written: say so to the dashboard (dashboard/run_watcher.hpp).
-  frames_csv_ << frame << ',' << e.steps() << ',' << e.time() << '\n' << std::flush;
+  frames_csv_ << frame << ',' << step << ',' << time << '\n' << std::flush;
 }
 
 void InSituSession::start(Engine& e, const Case& c, const std::string& run_dir,
@@ -77,43 +82,53 @@ void InSituSession::start(Engine& e, const Case& c, const std::string& run_dir,
   const fs::path file = run / "images" / "visualisation.json";
   std::ofstream(file) << settings.dump(2) << "\n";
   const auto t0 = std::chrono::steady_clock::now();
-  insitu_ = make_insitu({paths, file.string(), live_});
+  const InSituConfig config{paths, file.string(), live_};
+  // On the CPU backend the renderer shares the solver's cores: a twentieth of the wall time at most.
+  const double share = e.backend() == "cpu" ? kCpuRenderShare : 1.0;
+  render_ = std::make_unique<RenderThread>([config] { return make_insitu(config); }, every_frame_, share,
+                                           [this](long f, long s, double t, double sec) { rendered(f, s, t, sec); });
   startup_s_ = seconds_since(t0);
   std::string names;
   for (const auto& s : scripts_) names += (names.empty() ? "" : ", ") + s.name;
-  log("pipelines: " + names + " (" + insitu_->note() + ")");
+  log("pipelines: " + names + " (" + render_->note() + "; rendered on a thread of their own, " +
+      (every_frame_ ? "every frame" : "a frame the renderer has no time for is dropped") + ")");
   if (!live_.empty()) log("ParaView Live: connecting to " + live_ + " at each output step; the run carries on without it");
   hand_over(e);
-  first_frame_s_ = coprocess_s_;
 }
 
 void InSituSession::output(Engine& e) {
-  if (!insitu_ || e.steps() == last_step_) return;
+  if (!render_ || e.steps() == last_step_) return;
   stage(e);
   hand_over(e);
 }
 
 void InSituSession::finish() {
-  if (insitu_) insitu_->finalise();
+  if (render_) render_->finish();
 }
 
 nlohmann::json InSituSession::stats(double wall) const {
+  const double waited = render_ ? render_->waited_seconds() : 0, drained = render_ ? render_->drained_seconds() : 0;
   return {{"frames", frames_},
+          {"dropped_frames", render_ ? render_->dropped() : 0},
+          {"every_frame", every_frame_},
           {"startup_seconds", startup_s_},
           {"first_frame_seconds", first_frame_s_},
           {"staging_seconds", staging_s_},
           {"coprocess_seconds", coprocess_s_},
-          {"share_of_wall_time", (startup_s_ + staging_s_ + coprocess_s_) / std::max(wall, 1e-9)}};
+          {"waiting_seconds", waited},
+          {"drain_seconds", drained},
+          {"share_of_wall_time", (startup_s_ + staging_s_ + waited + drained) / std::max(wall, 1e-9)}};
 }
 
 std::string InSituSession::report(double wall) const {
   const double later = frames_ > 1 ? (coprocess_s_ - first_frame_s_) / double(frames_ - 1) : 0;
-  char line[320];
+  const long dropped = render_ ? render_->dropped() : 0;
+  char line[400];
   std::snprintf(line, sizeof line,
-                "in situ: %ld frames; start-up %.3g s, first frame %.3g s, then %.3g s per frame; staging %.3g ms "
-                "per frame; %.1f %% of the wall time",
-                frames_, startup_s_, first_frame_s_, later, 1e3 * staging_s_ / std::max<long>(frames_, 1),
-                100 * stats(wall)["share_of_wall_time"].get<double>());
+                "in situ: %ld frames rendered, %ld dropped; start-up %.3g s, first frame %.3g s, then %.3g s per "
+                "frame on the render thread; staging %.3g ms per frame; the solver's share %.1f %% of the wall time",
+                frames_, dropped, startup_s_, first_frame_s_, later,
+                1e3 * staging_s_ / std::max<long>(frames_ + dropped, 1), 100 * stats(wall)["share_of_wall_time"].get<double>());
   return line;
 }
 

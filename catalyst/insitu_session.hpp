@@ -1,7 +1,7 @@
 #pragma once
 // The solver's side of in-situ visualisation for one run: which pipelines (case file and command
 // line), which fields they need, and on each output step the staging of exactly those fields
-// and the hand-over to Catalyst, timed.
+// and the hand-over to the render thread (catalyst/render_thread.hpp), timed.
 #include <fstream>
 #include <functional>
 #include <memory>
@@ -12,6 +12,7 @@
 
 #include "catalyst/insitu.hpp"
 #include "catalyst/pipeline_scripts.hpp"
+#include "catalyst/render_thread.hpp"
 #include "engine/engine.hpp"
 #include "scene/case_file.hpp"
 
@@ -30,29 +31,34 @@ class InSituSession {
   const std::string& note() const { return note_; }
 
   // First output step: resolves the settings from this frame, writes images/visualisation.json,
-  // starts Catalyst and hands it frame 0.
+  // starts Catalyst on the render thread (its start-up errors are thrown here) and hands it frame 0.
   void start(Engine& e, const Case& c, const std::string& run_dir, const std::function<void(const std::string&)>& log);
-  // A later output step.
+  // A later output step: staged here, rendered on the render thread. Throws the renderer's error.
   void output(Engine& e);
+  // Waits for the frames handed over to be rendered; throws the renderer's error.
   void finish();
   long last_step() const { return last_step_; }
-  // Frames; seconds spent starting Catalyst (display, Python, pipeline scripts), in the first
-  // CoProcess (builds the pipelines), in all CoProcess calls and staging; their share of `wall`.
+  // Frames rendered and dropped; seconds spent starting Catalyst (display, Python, pipeline
+  // scripts), in the first CoProcess (builds the pipelines) and in all of them (on the render
+  // thread), staging, waiting for room (every_frame) and, at the end, for the frames left (the
+  // solver's); the solver's share of `wall`.
   nlohmann::json stats(double wall) const;
   std::string report(double wall) const;  // the same in one log line
 
  private:
   std::vector<std::string> stage(Engine& e);  // timed; returns the fields the engine lacks
-  void hand_over(Engine& e);                  // timed execute of the staged frame
+  void hand_over(Engine& e);                  // the staged frame to the render thread
+  void rendered(long frame, long step, double time, double seconds);  // on the render thread
 
   std::vector<PipelineScript> scripts_;
   std::vector<std::string> fields_;
   std::string live_, note_;
-  std::unique_ptr<InSitu> insitu_;
+  bool every_frame_ = false;  // [visualisation] every_frame: wait for the renderer, drop nothing
   std::ofstream frames_csv_;  // images/frames.csv: frame, step, time of each frame handed over
   ParticleFrame frame_;
-  long frames_ = 0, last_step_ = -1;
+  long frames_ = 0, last_step_ = -1;  // frames_: rendered (written by the render thread)
   double startup_s_ = 0, first_frame_s_ = 0, staging_s_ = 0, coprocess_s_ = 0;
+  std::unique_ptr<RenderThread> render_;  // last: joined before the members its callback writes go
 };
 
 }  // namespace psph

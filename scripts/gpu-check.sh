@@ -6,7 +6,8 @@
 #   2. configures the solver-only preset with CUDA on (ParaView and the dashboard off), builds
 #      poresph and gpu_tests (-j16), runs the gpu-labelled tests (CPU/CUDA agreement per physics
 #      family), then `poresph bench --backend cuda --json --profile` (each pass's share too) on the
-#      3D fluid box at 1e6 and 1e7 particles, then, while time is left, the other CUDA benchmarks
+#      3D fluid box at 1e6 particles, SPHERIC test 2 at its published 4,989,696 particles, the whole
+#      claystone drainage cell and the fluid box at 1e7, then, while time is left, the other CUDA benchmarks
 #      one by one.
 # Header-only dependencies: toml++ (used header-only), CLI11, nlohmann-json, and GoogleTest's
 # sources (the tests' CMake needs it); Thrust/CUB come with CUDA. They are gathered on a Debian 12
@@ -169,7 +170,7 @@ grep -E '^[0-9: ]*[a-z_]+: (passed|FAILED)$' "$out/ctest-gpu.log" | sed 's/^[0-9
 
 # The benchmarks: each in its own process, so that a timeout keeps the records before it.
 mkdir -p "$tmp/bench"
-if ((dry)); then backend=cpu; large=(fluid_box_3d_10000); else backend=cuda; large=(fluid_box_3d_1000000 fluid_box_3d_10000000); fi
+if ((dry)); then backend=cpu; large=(fluid_box_3d_10000); else backend=cuda; large=(fluid_box_3d_1000000 spheric_dam_break_3d_dp6mm claystone_drainage fluid_box_3d_10000000); fi
 parts=()
 for b in "${large[@]}"; do
   phase "bench $b" 150 "$tmp/bench/$b.json" "$out/bench.log" "$poresph" bench --backend $backend --json --profile "$b" || failed+=("$b")

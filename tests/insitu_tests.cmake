@@ -1,5 +1,5 @@
 # End to end: the solver runs a short dam break with two Catalyst pipelines, headless (its own
-# Xvfb); images, settings, extracts and the in-situ timing must be there, the extracts must hold
+# Xvfb), every frame rendered; images, settings, extracts and the in-situ timing must be there, the extracts must hold
 # the solver's values, `figures` must re-render the sequence from the extracts, and --live with
 # nobody listening must not stop the run.
 cmake_minimum_required(VERSION 3.24)
@@ -9,8 +9,10 @@ file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 file(READ ${SRC}/cases/dam_break_3d.toml text)
 string(REPLACE "end = 20.0" "end = 0.02" text "${text}")
-string(REPLACE "extract_interval = 0.25" "extract_interval = 0.005" text "${text}")
+string(REPLACE "extract_interval = 1.0" "extract_interval = 0.005" text "${text}")
 string(APPEND text "\n[visualisation]\npipelines = [\"phases\"]\ninterval = 0.005\nimage_size = [320, 240]\n")
+file(WRITE ${WORK}/db_dropping.toml "${text}")
+string(APPEND text "every_frame = true\n")
 file(WRITE ${WORK}/db.toml "${text}")
 
 run_poresph(0 run ${WORK}/db.toml --out ${WORK}/run --pipeline pressure --quiet)
@@ -42,6 +44,29 @@ file(GLOB vtps ${WORK}/run/extracts/particles_*.vtp)
 list(LENGTH vtps n)
 if(NOT (n EQUAL 5))
   message(FATAL_ERROR "expected an extract per frame, found ${n}")
+endif()
+
+# The default: the render thread drops the frames it has no time for (never the solver's time);
+# what it renders is the same picture, and rendered + dropped frames are the output steps.
+run_poresph(0 run ${WORK}/db_dropping.toml --out ${WORK}/dropping --quiet)
+file(READ ${WORK}/dropping/summary.json summary)
+string(JSON rendered GET "${summary}" insitu frames)
+string(JSON dropped GET "${summary}" insitu dropped_frames)
+math(EXPR outputs "${rendered} + ${dropped}")
+if(NOT (outputs EQUAL 5 AND rendered GREATER_EQUAL 2))
+  message(FATAL_ERROR "expected 5 output steps, frame 0 and the last among those rendered: ${rendered} rendered, ${dropped} dropped")
+endif()
+file(STRINGS ${WORK}/dropping/images/frames.csv rows)
+list(LENGTH rows nrows)
+list(GET rows -1 last)
+math(EXPR expected_rows "${rendered} + 1")
+if(NOT (nrows EQUAL expected_rows AND last MATCHES ",0\\.0(2|19999+[0-9]*)$"))
+  message(FATAL_ERROR "images/frames.csv should list the ${rendered} rendered frames, the last at t = 0.02: ${rows}")
+endif()
+execute_process(COMMAND ${IMAGE_DIFF} ${WORK}/dropping/images/phases/3d_000000.png ${WORK}/run/images/phases/3d_000000.png
+                        ${WORK}/dropping RESULT_VARIABLE rc OUTPUT_VARIABLE out)
+if(NOT (rc EQUAL 0))
+  message(FATAL_ERROR "frame 0 rendered on the render thread differs from the every-frame run's: ${out}")
 endif()
 
 execute_process(COMMAND ${CHECK_EXTRACT} ${WORK}/db.toml ${WORK}/run 0.005 pressure phase velocity
@@ -94,7 +119,7 @@ endforeach()
 # real 2D run against its baseline (tests/baselines/phases_2d_run.png, same threshold).
 file(READ ${SRC}/cases/poiseuille_2d.toml text)
 string(REPLACE "end = 0.5" "end = 0.02" text "${text}")
-string(APPEND text "\n[visualisation]\ninterval = 0.01\nimage_size = [320, 240]\n")
+string(APPEND text "\n[visualisation]\ninterval = 0.01\nimage_size = [320, 240]\nevery_frame = true\n")
 file(WRITE ${WORK}/p2.toml "${text}")
 run_poresph(0 run ${WORK}/p2.toml --out ${WORK}/run2d --pipeline phases --quiet)
 file(GLOB slabs ${WORK}/run2d/images/phases/slab_*.png)
@@ -117,7 +142,7 @@ endif()
 # (0, Y, 0) with PARALLEL_SCALE, frame 2 against tests/baselines/BASELINE (same threshold).
 function(check_cracked name interval size y scale baseline)
   file(READ ${SRC}/cases/${name}.toml text)
-  string(APPEND text "\n[visualisation]\ninterval = ${interval}\nimage_size = ${size}\nscalar_bar = false\n"
+  string(APPEND text "\n[visualisation]\ninterval = ${interval}\nimage_size = ${size}\nscalar_bar = false\nevery_frame = true\n"
                      "[visualisation.camera]\nposition = [0.0, ${y}, 1.0]\nfocal_point = [0.0, ${y}, 0.0]\n"
                      "parallel_scale = ${scale}\n")
   file(WRITE ${WORK}/${name}.toml "${text}")

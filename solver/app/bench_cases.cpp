@@ -36,6 +36,19 @@ std::vector<BenchSpec> bench_specs(const std::string& backend, bool quick) {
   // SPHinXsys' set-up tests/3d_examples/test_3d_dambreak (commit 9f33297): fluid particle-steps
   // per second compare directly with the 0.40-0.48 M it reaches on 2 cores (BENCHMARKS.md).
   embedded("dam_break_3d", 50, 400);
+  // SPHERIC test 2 with the published GPU comparison's set-up (cases/spheric_dam_break_3d.toml):
+  // particle-steps per second (walls included, as there) read directly against DualSPHysics'
+  // 3.44e8 and TNL-SPH's 3.99e8 on an H100 at spacing 0.006 (4,989,696 particles).
+  std::vector<double> spheric = {0.04};
+  if (!quick) spheric.push_back(0.02);
+  if (backend == "cuda" && !quick) spheric.insert(spheric.end(), {0.01, 0.006});
+  for (double dp : spheric) {
+    BenchSpec b;
+    b.name = "spheric_dam_break_3d_dp" + std::to_string(static_cast<int>(std::lround(dp * 1000))) + "mm";
+    b.build = [dp] { return spheric_dam_break_case(dp); };
+    b.steps = backend == "cuda" ? 200 : quick ? 5 : dp > 0.03 ? 100 : 20;
+    s.push_back(b);
+  }
   // Two fluids with surface tension and walls: the colour, normal and curvature passes on top.
   embedded("drainage_2d", 50, 1000);
   // Elastic solids: the cantilever plate vibrating in each formulation (the displacement form at
@@ -85,7 +98,14 @@ std::vector<BenchSpec> bench_specs(const std::string& backend, bool quick) {
   // A rigid disc settling through a viscous fluid: the bodies' sums and placement on top of the fluid.
   embedded("settling_cylinder_2d", 100, 2000);
   embedded("elastic_cube_3d", 20, 200);
+  // The whole claystone drainage cell (235,480 particles, every stage of the coupled step): its
+  // particle-steps per second give the time to solution of the published cell.
+  if (!quick) embedded("claystone_drainage", 0, backend == "cuda" ? 200 : 10);
   return s;
+}
+
+double published_cell_hours(double particle_steps_per_second) {
+  return kPublishedCellParticles * kPublishedCellSteps / particle_steps_per_second / 3600;
 }
 
 namespace {

@@ -30,6 +30,15 @@ struct BenchResult {
   PassProfile profile;  // the timed steps' passes (core/pass_profile.hpp)
 };
 
+// The published drainage cell (Pazdniakou & Dymitrowska 2018 §5.2): ~1.6 M particles, "more than 3
+// million time steps", 30 days on a Quadro K5200. Its wall time at a measured rate of the coupled
+// step (the claystone_drainage benchmark's particle-steps per second), in hours.
+constexpr double kPublishedCellParticles = 1.6e6, kPublishedCellSteps = 3e6;
+double published_cell_hours(double particle_steps_per_second);
+
+// SPHERIC test 2 at `spacing` (app/bench_spheric.cpp).
+Case spheric_dam_break_case(double spacing);
+
 std::vector<BenchSpec> bench_specs(const std::string& backend, bool quick);
 BenchResult run_bench(const BenchSpec& spec, const std::string& backend, std::ostream* log);
 

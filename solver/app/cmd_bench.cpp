@@ -100,6 +100,8 @@ int cmd_bench(const std::vector<std::string>& names, bool json, const std::strin
                    {"neighbours_per_particle", r.neighbours},
                    {"interactions_per_second", r.interactions_per_second},
                    {"threads", r.threads}});
+    const bool cell = r.name == "claystone_drainage";
+    if (cell) out.back()["published_cell_hours"] = published_cell_hours(r.particle_steps_per_second);
     PassProfile none;
     if (profile) out.back()["profile"] = profile_json(r.profile, none, r.seconds);
     if (!json) {
@@ -111,6 +113,9 @@ int cmd_bench(const std::vector<std::string>& names, bool json, const std::strin
                     r.fluid_particle_steps_per_second, r.particle_steps_per_second, r.interactions_per_second,
                     r.neighbours);
       std::cout << line << std::endl;
+      if (cell)
+        std::printf("  the published drainage cell (%.2g particles, %.2g steps) at this rate: %.1f h\n",
+                    kPublishedCellParticles, kPublishedCellSteps, published_cell_hours(r.particle_steps_per_second));
       if (profile)
         for (const std::string& l : profile_lines(r.profile, none, r.seconds, 12)) std::cout << l << "\n";
     }

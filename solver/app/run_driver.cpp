@@ -292,9 +292,14 @@ void RunDriver::take_requests() {
   }
 }
 
-// The stages' monitors as the engine names them, then the two-phase monitors of the run.
+// The stages' monitors as the engine names them, the pressure probes, then the two-phase monitors.
 void RunDriver::monitor() {
   std::vector<MonitorValue> row = engine_->monitors();
+  if (!c_.probes.empty()) {
+    const std::vector<std::string> names = probe_columns(c_.probes);
+    const std::vector<double> values = sample_probes(*engine_, c_.scene, c_.probes);
+    for (std::size_t k = 0; k < names.size(); ++k) row.push_back({names[k], values[k]});
+  }
   if (!two_phase_) return rd_->monitor(*engine_, row);
   const bool before = two_phase_->percolation_time() >= 0;
   const std::vector<std::string> names = two_phase_->columns();
@@ -337,7 +342,9 @@ void RunDriver::finish() {
       if (cut_short) insitu_->output(*engine_);  // the state it stopped at, as a last frame
       insitu_->finish();
     } catch (const std::exception& e) {
-      log(std::string("warning: in-situ visualisation: ") + e.what());
+      // The render thread's error (a pipeline script that raised) fails a run that asked for figures.
+      if (code_ == 0) status_ = "failed", code_ = 4, diagnostic_ = std::string("in-situ visualisation: ") + e.what();
+      log(std::string(code_ == 4 ? "failed" : "warning") + ": in-situ visualisation: " + e.what());
     }
   }
   const double wall = wall_now();

@@ -17,6 +17,7 @@
 #include "io/durable_file.hpp"
 #include "io/particle_output.hpp"
 #include "io/run_directory.hpp"
+#include "monitors/pressure_probes.hpp"
 #include "monitors/two_phase.hpp"
 #include "scene/case_file.hpp"
 

@@ -50,8 +50,10 @@ PSPH_HD PSPH_PAIR inline FluidPairTerms<D> fluid_pair_terms(const FluidParticle<
   const Real rho_j = s.rho[j];
   const Real m_j = s.m[j];
   const Real inv_rho_j = Real(1) / rho_j;
-  const Vec<D> vij = fi.v - s.v[j];
   const bool fluid_j = mats.is_fluid(mj);
+  // Against a wall or solid, the velocity it presents (boundary/wall_velocity.hpp) in both viscous
+  // terms: its own with `prescribed`, the fluid's with `free_slip` (no artificial wall friction).
+  const Vec<D> vij = fi.v - (fluid_j ? s.v[j] : s.v_noslip[j]);
   // Pressure, symmetric form (Pazdniakou eq. 54b in eq. 57). With number density the particle
   // masses differ by the density ratio, and eq. 54b would weigh a gas particle's own pressure by
   // its liquid neighbour's mass; the volume form of Hu & Adams (2006, J. Comput. Phys. 213:844),
@@ -71,9 +73,8 @@ PSPH_HD PSPH_PAIR inline FluidPairTerms<D> fluid_pair_terms(const FluidParticle<
   }
   // Viscosity (fluid/viscosity.hpp); a wall or solid presents its no-slip velocity
   // (boundary/wall_velocity.hpp).
-  const Vec<D> vij_visc = fluid_j ? vij : fi.v - s.v_noslip[j];
   const Real coef = viscous_pair_coefficient(fi.mu, fluid_j ? mats[mj].viscosity : fi.mu, V_j, fi.inv_rho, dw_r);
-  return FluidPairTerms<D>{rij * (-pterm * dw_r), rij * (-pi_ij * dw_r), vij_visc * coef};
+  return FluidPairTerms<D>{rij * (-pterm * dw_r), rij * (-pi_ij * dw_r), vij * coef};
 }
 
 template <int D>

@@ -31,6 +31,7 @@ void read_interface(CaseReader& top, CaseDraft& d);        // [interface]
 void read_solver(CaseReader& top, CaseDraft& d);           // [solver]
 void read_time_and_output(CaseReader& top, CaseDraft& d);  // [time], [output], [visualisation]
 void read_monitors(CaseReader& top, CaseDraft& d);         // [monitors]
+void read_probes(CaseReader& top, CaseDraft& d);           // [[probe]]
 void read_geometry(CaseReader& top, CaseDraft& d);         // [[geometry]]
 
 Case parse_case(const toml::table& given, const std::string& file) {
@@ -57,6 +58,7 @@ Case parse_case(const toml::table& given, const std::string& file) {
   read_solver(top, d);
   read_time_and_output(top, d);
   read_monitors(top, d);
+  read_probes(top, d);
   read_geometry(top, d);
   top.finish();
   cross_check(d);

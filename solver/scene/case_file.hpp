@@ -13,6 +13,7 @@
 #include <toml++/toml.h>
 
 #include "monitors/monitor_region.hpp"
+#include "monitors/pressure_probes.hpp"
 #include "scene/shape.hpp"
 #include "engine/scene.hpp"
 #include "scene/visualisation_options.hpp"
@@ -53,6 +54,7 @@ struct Case {
   OutputOptions output;
   bool two_phase = false;  // a liquid and a gas: the two-phase monitors run (monitors/two_phase.hpp)
   MonitorRegion monitor_region;
+  std::vector<Probe> probes;  // [[probe]]: pressure at fixed points (monitors/pressure_probes.hpp)
   VisualisationOptions visualisation;
   std::string source_text;  // the resolved case, as TOML
   std::vector<nlohmann::json> images;  // each image geometry's report (image/image_report.hpp)

@@ -1,5 +1,6 @@
 // The case tables that set up a run: [case], [domain], [discretisation], [time], [output],
 // [visualisation], [monitors].
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
@@ -139,6 +140,27 @@ void read_monitors(CaseReader& top, CaseDraft& d) {
   // Lattice neighbours (1 and sqrt(2) spacings) connect; a one-particle water film (2) does not.
   m.percolation_distance = r.positive("percolation_distance", 1.5 * sc.options.spacing);
   r.finish();
+}
+
+// Pressure probes (monitors/pressure_probes.hpp): a name that makes a column, a point in the domain.
+void read_probes(CaseReader& top, CaseDraft& d) {
+  const Scene& sc = d.c.scene;
+  const int D = d.dimension();
+  top.each_table("probe", 64, "probes", [&](CaseReader& r) {
+    Probe p;
+    p.name = r.string("name");
+    const bool word = !p.name.empty() && std::all_of(p.name.begin(), p.name.end(), [](char ch) {
+      return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+    });
+    if (!word) r.fail("name", "expected a name of letters, digits and '_' (it makes the column pressure_<name>)");
+    for (const Probe& q : d.c.probes)
+      if (q.name == p.name) r.fail("name", "expected a name no other probe has, got \"" + p.name + "\" twice");
+    p.position = r.vec<double>("position", D);
+    for (int k = 0; k < D; ++k)
+      if (p.position[k] < sc.lower[k] || p.position[k] > sc.upper[k])
+        r.fail("position", "expected a point inside the domain (axis " + std::to_string(k) + ")");
+    d.c.probes.push_back(p);
+  });
 }
 
 }  // namespace psph

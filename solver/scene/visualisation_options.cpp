@@ -25,6 +25,7 @@ VisualisationOptions parse_visualisation(const toml::table& table, const std::st
   CaseReader t(table, file, "visualisation");
   v.pipelines = t.strings("pipelines", {});
   v.interval = t.non_negative("interval", 0.0);
+  v.every_frame = t.boolean("every_frame", false);
   const auto size = t.vec<double>("image_size", 2, std::array<double, 3>{800, 600, 0});
   for (int k = 0; k < 2; ++k) {
     if (!(size[k] >= 16 && size[k] <= 8192 && size[k] == static_cast<int>(size[k])))

@@ -21,6 +21,7 @@ struct CameraOptions {
 struct VisualisationOptions {
   std::vector<std::string> pipelines;  // names in pipelines/ or paths to .py scripts
   double interval = 0;                 // s between output steps; 0 = a fiftieth of the run
+  bool every_frame = false;  // the solver waits for the renderer instead of dropping frames
   std::array<int, 2> image_size{800, 600};
   double point_radius = 0;  // m; 0 = half the spacing
   bool scalar_bar = true;
