@@ -14,6 +14,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/pass_profile.hpp"
 
@@ -48,13 +49,37 @@ struct ApplyIndex {
 
 // Times one launch with a pair of events into the focused profile, if any: read when the profile
 // resolves them (core/pass_profile.hpp), so that the launch is not waited for.
+// Event pairs for the pass clock, created once and reused: the resolver hands each pair back
+// after reading it (creating and destroying two events per launch costs more than many launches).
+// The profile is recorded and resolved on the thread that launches.
+class EventPairs {
+ public:
+  static cudaEvent_t* take() {
+    std::vector<cudaEvent_t*>& f = free_pairs();
+    if (!f.empty()) {
+      cudaEvent_t* e = f.back();
+      f.pop_back();
+      return e;
+    }
+    cudaEvent_t* e = new cudaEvent_t[2];
+    PSPH_CUDA(cudaEventCreate(&e[0]));
+    PSPH_CUDA(cudaEventCreate(&e[1]));
+    return e;
+  }
+  static void give(cudaEvent_t* e) { free_pairs().push_back(e); }
+
+ private:
+  static std::vector<cudaEvent_t*>& free_pairs() {
+    static std::vector<cudaEvent_t*> f;
+    return f;
+  }
+};
+
 class DevicePassClock {
  public:
   explicit DevicePassClock(const std::string& pass) : focus_(profile_focus()), pass_(pass) {
     if (!focus_.profile) return;
-    events_ = new cudaEvent_t[2];
-    PSPH_CUDA(cudaEventCreate(&events_[0]));
-    PSPH_CUDA(cudaEventCreate(&events_[1]));
+    events_ = EventPairs::take();
     PSPH_CUDA(cudaEventRecord(events_[0]));
   }
   ~DevicePassClock() {
@@ -70,8 +95,7 @@ class DevicePassClock {
     cudaEvent_t* e = static_cast<cudaEvent_t*>(handle);
     float ms = 0;
     if (cudaEventSynchronize(e[1]) != cudaSuccess || cudaEventElapsedTime(&ms, e[0], e[1]) != cudaSuccess) ms = 0;
-    cudaEventDestroy(e[0]), cudaEventDestroy(e[1]);
-    delete[] e;
+    EventPairs::give(e);
     return 1e-3 * ms;
   }
   ProfileFocus focus_;

@@ -49,7 +49,6 @@ class FluidStage {
 
   // Each material's background pressure at time t.
   void ramp_pressure(StepContext<D, B>& cx, double t) const {
-    const StageScope scope("fluid");
     if (o_.background_pressure_rate == 0) return;
     for (int m = 0; m < cx.mats.count; ++m)
       cx.mats.m[m].background_pressure = Real(background_pressure_[m] + o_.background_pressure_rate * t);
@@ -57,7 +56,6 @@ class FluidStage {
 
   // Body-force regions at time t, each scaled by its ramp factor.
   void ramp_regions(StepContext<D, B>& cx, double t) const {
-    const StageScope scope("fluid");
     for (int r = 0; r < cx.mats.region_count; ++r) {
       const double f = ramp_factor(t, regions_[r].ramp_time);
       for (int d = 0; d < D; ++d) cx.mats.region[r].acceleration[d] = Real(f * regions_[r].acceleration[d]);
