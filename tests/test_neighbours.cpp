@@ -117,3 +117,23 @@ TEST(Neighbours, RetiredGhostsAreInNoList) {
   }
   EXPECT_GT(pending_listed, 0);
 }
+
+// The pruned stencil (cells whose nearest face is beyond the radius are skipped): with cells one
+// radius wide, a corner cell is in reach with probability pi/6 and an edge cell pi/4, so a random
+// point visits 7 + 12 pi/4 + 8 pi/6 = 20.6 of the 27 cells on average. Brute force above checks
+// that no neighbour is lost.
+TEST(Neighbours, StencilSkipsCellsOutOfReach) {
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> u(0, 1);
+  const Real lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+  const bool per[3] = {true, true, true};
+  const HostNeighbours<3> nb(std::vector<Vec<3>>{}, lo, hi, per, Real(0.1));
+  const NeighbourView<3> view = nb.view();
+  const int points = 20000;
+  long visited = 0;
+  for (int i = 0; i < points; ++i) {
+    const Vec<3> p{Real(u(rng)), Real(u(rng)), Real(u(rng))};
+    view.for_each_cell_in_reach(p, [&](int) { ++visited; });
+  }
+  EXPECT_NEAR(double(visited) / points, 7 + 3.14159265 * (3.0 + 4.0 / 3.0), 0.15);
+}

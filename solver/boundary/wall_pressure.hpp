@@ -23,21 +23,39 @@ namespace psph {
 
 enum class WallPressure { Summation = 0, Extrapolated = 1 };
 
-// Adami, Hu & Adams (2012) eq. 27 at particle i, which accelerates at a_i (0 for walls and solids
-// here, solid/fluid_coupling.hpp), into p; false (p untouched) without fluid within the support.
+// The sums of Adami, Hu & Adams (2012) eq. 27 at a particle that accelerates at a_i (0 for walls
+// and solids here, solid/fluid_coupling.hpp), over its fluid neighbours f.
+template <int D>
+struct FluidPressureSum {
+  Vec<D> a_i = Vec<D>::zero();
+  Real psum = 0, wsum = 0;
+  PSPH_HD PSPH_PAIR void add(const ParticleView<D>& s, const FluidTable<D>& mats, int j, const Vec<D>& rij, Real w) {
+    psum += (s.p[j] + s.rho[j] * dot(mats.body_force_at(s.material[j], s.x[j]) - a_i, rij)) * w;
+    wsum += w;
+  }
+  // The extrapolated pressure into p; false (p untouched) without fluid within the support.
+  PSPH_HD bool pressure(Real& p) const {
+    if (!(wsum > Real(0))) return false;
+    p = psum / wsum;
+    return true;
+  }
+};
+
 template <int D>
 PSPH_HD inline bool extrapolate_fluid_pressure(const NeighbourList<D>& nb, const Kernel<D>& kern,
                                                const ParticleView<D>& s, const FluidTable<D>& mats, int i,
                                                const Vec<D>& a_i, Real& p) {
-  Real psum = 0, wsum = 0;
-  nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
-    const Real w = kern.W(r);
-    psum += (s.p[j] + s.rho[j] * dot(mats.body_force_at(s.material[j], s.x[j]) - a_i, rij)) * w;
-    wsum += w;
-  });
-  if (!(wsum > Real(0))) return false;
-  p = psum / wsum;
-  return true;
+  FluidPressureSum<D> sum;
+  sum.a_i = a_i;
+  nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR { sum.add(s, mats, j, rij, kern.W(r)); });
+  return sum.pressure(p);
+}
+
+// A wall presents pressure p (its density from the EOS at p).
+template <int D>
+PSPH_HD inline void set_wall_pressure(const ParticleView<D>& s, const FluidTable<D>& mats, int i, Real p) {
+  s.p[i] = p;
+  s.rho[i] = density_from_pressure(mats[s.material[i]], p, s.rho0[i]);
 }
 
 template <int D>
@@ -48,8 +66,7 @@ struct WallPressurePass {
     if (c.mats[mi].kind != MaterialKind::Wall) return;
     Real p = c.mats[mi].background_pressure;
     if (c.s.near_fluid[i]) extrapolate_fluid_pressure(c.nb, c.kern, c.s, c.mats, i, Vec<D>::zero(), p);
-    c.s.p[i] = p;
-    c.s.rho[i] = density_from_pressure(c.mats[mi], p, c.s.rho0[i]);
+    set_wall_pressure(c.s, c.mats, i, p);
   }
 };
 

@@ -25,28 +25,47 @@ namespace psph {
 
 enum class WallNoSlip { Prescribed = 0, Mirror = 1, Curved = 2, FreeSlip = 3 };
 
+// The Shepard sums of the modes above over the fluid neighbours f of a wall or solid particle.
+template <int D>
+struct NoSlipSum {
+  Vec<D> normal = Vec<D>::zero();  // the wall normal (curved mode only)
+  Vec<D> sum = Vec<D>::zero();
+  Real wsum = 0;
+  PSPH_HD PSPH_PAIR void add(const ParticleView<D>& s, int j, const Vec<D>& rij, Real w) {
+    const Real dn = dot(rij, normal);
+    sum += (s.v[j] - s.lap_v[j] * (Real(0.25) * dn * dn)) * w;
+    wsum += w;
+  }
+  PSPH_HD Vec<D> velocity(WallNoSlip mode, const Vec<D>& v_i) const {
+    if (!(wsum > Real(0))) return v_i;
+    return mode == WallNoSlip::FreeSlip ? sum * (Real(1) / wsum) : v_i * Real(2) - sum * (Real(1) / wsum);
+  }
+};
+
+// Whether particle i presents its own velocity (no fluid near, or `prescribed`), and the sum to
+// fill otherwise.
+template <int D>
+PSPH_HD inline bool presents_own_velocity(const PairContext<D>& c, WallNoSlip mode, int i, NoSlipSum<D>& sum) {
+  if (mode == WallNoSlip::Prescribed || !c.s.near_fluid[i]) return true;
+  if (mode == WallNoSlip::Curved) sum.normal = wall_normal_towards_fluid(c.nb, c.kern, i);
+  return false;
+}
+
 template <int D>
 struct WallVelocityPass {
   PairContext<D> c;  // lists, kernel, particles, materials
   WallNoSlip mode;
+  bool skip_walls;  // walls done by WallStatePass (boundary/wall_state.hpp): solids only
   PSPH_HD void operator()(int i) const {
-    if (c.mats.is_fluid(c.s.material[i])) return;
-    if (mode == WallNoSlip::Prescribed || !c.s.near_fluid[i]) {
+    const int mi = c.s.material[i];
+    if (c.mats.is_fluid(mi) || (skip_walls && c.mats[mi].kind == MaterialKind::Wall)) return;
+    NoSlipSum<D> ns;
+    if (presents_own_velocity(c, mode, i, ns)) {
       c.s.v_noslip[i] = c.s.v[i];
       return;
     }
-    const Vec<D> normal = mode == WallNoSlip::Curved ? wall_normal_towards_fluid(c.nb, c.kern, i) : Vec<D>::zero();
-    Vec<D> sum = Vec<D>::zero();
-    Real wsum = 0;
-    c.nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
-      const Real w = c.kern.W(r);
-      const Real dn = dot(rij, normal);
-      sum += (c.s.v[j] - c.s.lap_v[j] * (Real(0.25) * dn * dn)) * w;
-      wsum += w;
-    });
-    if (!(wsum > Real(0))) c.s.v_noslip[i] = c.s.v[i];
-    else if (mode == WallNoSlip::FreeSlip) c.s.v_noslip[i] = sum * (Real(1) / wsum);
-    else c.s.v_noslip[i] = c.s.v[i] * Real(2) - sum * (Real(1) / wsum);
+    c.nb.for_each_fluid(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR { ns.add(c.s, j, rij, c.kern.W(r)); });
+    c.s.v_noslip[i] = ns.velocity(mode, c.s.v[i]);
   }
 };
 

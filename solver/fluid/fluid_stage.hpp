@@ -5,8 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "boundary/wall_pressure.hpp"
-#include "boundary/wall_velocity.hpp"
+#include "boundary/wall_state.hpp"
 #include "core/instability.hpp"
 #include "core/pass_profile.hpp"
 #include "fluid/body_force_region.hpp"
@@ -89,10 +88,10 @@ class FluidStage {
   // Walls and solids present a pressure and a no-slip velocity (boundary/, solid/fluid_coupling.hpp).
   void present_walls(StepContext<D, B>& cx) const {
     const StageScope scope("fluid");
-    if (cx.walls && o_.wall_pressure == WallPressure::Extrapolated)
-      B::for_each(cx.n(), WallPressurePass<D>{cx.pairs()});
-    if (cx.walls || cx.solids())
-      B::for_each(cx.n(), WallVelocityPass<D>{cx.pairs(), o_.wall_noslip});
+    const bool extrapolated = cx.walls && o_.wall_pressure == WallPressure::Extrapolated;
+    if (extrapolated) B::for_each(cx.n(), WallStatePass<D>{cx.pairs(), o_.wall_noslip});
+    if ((cx.walls && !extrapolated) || cx.solids())
+      B::for_each(cx.n(), WallVelocityPass<D>{cx.pairs(), o_.wall_noslip, extrapolated});
   }
   void forces(StepContext<D, B>& cx) const {
     const StageScope scope("fluid");

