@@ -113,9 +113,11 @@ int cmd_bench(const std::vector<std::string>& names, bool json, const std::strin
                     r.fluid_particle_steps_per_second, r.particle_steps_per_second, r.interactions_per_second,
                     r.neighbours);
       std::cout << line << std::endl;
-      if (cell)
-        std::printf("  the published drainage cell (%.2g particles, %.2g steps) at this rate: %.1f h\n",
-                    kPublishedCellParticles, kPublishedCellSteps, published_cell_hours(r.particle_steps_per_second));
+      if (cell) {
+        std::snprintf(line, sizeof line, "  the published drainage cell (%.2g particles, %.2g steps) at this rate: %.1f h",
+                      kPublishedCellParticles, kPublishedCellSteps, published_cell_hours(r.particle_steps_per_second));
+        std::cout << line << "\n";
+      }
       if (profile)
         for (const std::string& l : profile_lines(r.profile, none, r.seconds, 12)) std::cout << l << "\n";
     }

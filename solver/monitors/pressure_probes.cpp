@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "kernels/kernel.hpp"
+#include "monitors/particle_volumes.hpp"
 
 namespace psph {
 namespace {
@@ -48,10 +49,7 @@ std::vector<std::string> probe_columns(const std::vector<Probe>& probes) {
 
 std::vector<double> sample_probes(Engine& e, const Scene& sc, const std::vector<Probe>& probes) {
   const std::vector<double> x = e.field("position"), p = e.field("pressure");
-  const std::vector<double> m = e.field("mass"), rho = e.field("density"), mat = e.field("material");
-  std::vector<double> volume(m.size());
-  for (std::size_t i = 0; i < m.size(); ++i) volume[i] = m[i] / rho[i];
-  return probe_pressures(sc, probes, x, p, volume, mat);
+  return probe_pressures(sc, probes, x, p, particle_volumes(e), e.field("material"));
 }
 
 }  // namespace psph

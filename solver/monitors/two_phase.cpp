@@ -6,6 +6,7 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "monitors/particle_volumes.hpp"
 #include "state/derived_fields.hpp"
 
 namespace psph {
@@ -148,10 +149,8 @@ std::vector<std::string> TwoPhaseMonitor::columns() const {
 
 std::vector<double> TwoPhaseMonitor::sample(Engine& e) {
   const std::vector<double> x = e.field("position"), v = e.field("velocity"), p = e.field("pressure");
-  const std::vector<double> m = e.field("mass"), rho = e.field("density"), mat = e.field("material");
-  std::vector<double> volume(m.size());
-  for (std::size_t i = 0; i < m.size(); ++i) volume[i] = m[i] / rho[i];
-  last_ = sample_two_phase(sc_, region_, x, v, p, volume, mat);
+  const std::vector<double> mat = e.field("material");
+  last_ = sample_two_phase(sc_, region_, x, v, p, particle_volumes(e), mat);
   if (last_.percolated && t_perc_ < 0) t_perc_ = e.time(), s_perc_ = last_.saturation_gas;
   std::vector<double> row = {last_.saturation_liquid, last_.saturation_gas, last_.porosity, last_.pressure_liquid,
                              last_.pressure_gas, last_.pressure_gas - last_.pressure_liquid};
