@@ -2,8 +2,8 @@
 # Installs the Debian 12 packages poresph needs. Idempotent: when every package is present it
 # only checks (dpkg-query) and returns in well under a second.
 #   scripts/install-deps.sh            solver, tests, VTK output (ParaView 5.11), the dashboard
-#                                      (cpp-httplib; Chromium for its browser tests; the front-end's
-#                                      npm packages install at build time with the machine's npm)
+#                                      (cpp-httplib; Chromium for its browser tests; Node.js and npm,
+#                                      with which the front-end's npm packages install at build time)
 #   scripts/install-deps.sh --minimal  solver and tests only (no ParaView; libtiff for TIFF images)
 set -euo pipefail
 
@@ -16,6 +16,12 @@ pkgs=(build-essential cmake ninja-build libomp-dev
 [[ "${1:-}" == "--minimal" ]] || pkgs+=(paraview-dev python3-paraview libopenmpi-dev libglew-dev libnetcdf-dev
                                         libhdf5-dev libx11-dev libfreetype-dev libboost-dev libxml2-dev xvfb ffmpeg
                                         libcpp-httplib-dev chromium python3-matplotlib)
+# The dashboard's front-end builds with Debian 12's own nodejs (18) and npm; a Node.js that is
+# already there (with its own npm, as NodeSource's) is kept: Debian's npm would clash with it.
+if [[ "${1:-}" != "--minimal" ]]; then
+  command -v node >/dev/null || pkgs+=(nodejs)
+  command -v npm >/dev/null || pkgs+=(npm)
+fi
 
 missing=()
 for p in "${pkgs[@]}"; do
