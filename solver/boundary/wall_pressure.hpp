@@ -51,23 +51,4 @@ PSPH_HD inline bool extrapolate_fluid_pressure(const NeighbourList<D>& nb, const
   return sum.pressure(p);
 }
 
-// A wall presents pressure p (its density from the EOS at p).
-template <int D>
-PSPH_HD inline void set_wall_pressure(const ParticleView<D>& s, const FluidTable<D>& mats, int i, Real p) {
-  s.p[i] = p;
-  s.rho[i] = density_from_pressure(mats[s.material[i]], p, s.rho0[i]);
-}
-
-template <int D>
-struct WallPressurePass {
-  PairContext<D> c;  // lists, kernel, particles, materials
-  PSPH_HD void operator()(int i) const {
-    const int mi = c.s.material[i];
-    if (c.mats[mi].kind != MaterialKind::Wall) return;
-    Real p = c.mats[mi].background_pressure;
-    if (c.s.near_fluid[i]) extrapolate_fluid_pressure(c.nb, c.kern, c.s, c.mats, i, Vec<D>::zero(), p);
-    set_wall_pressure(c.s, c.mats, i, p);
-  }
-};
-
 }  // namespace psph

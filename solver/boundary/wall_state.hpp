@@ -3,6 +3,7 @@
 // no-slip velocity (boundary/wall_velocity.hpp), from one loop over its fluid neighbours: the two
 // passes apart walked the same pairs twice (9 % of the 3D dam break's step).
 #include "boundary/wall_pressure.hpp"
+#include "core/equation_of_state.hpp"
 #include "boundary/wall_velocity.hpp"
 
 namespace psph {
@@ -26,7 +27,8 @@ struct WallStatePass {
       });
       ps.pressure(p);
     }
-    set_wall_pressure(c.s, c.mats, i, p);
+    c.s.p[i] = p;
+    c.s.rho[i] = density_from_pressure(c.mats[mi], p, c.s.rho0[i]);  // the EOS inverted at p
     c.s.v_noslip[i] = own_velocity ? c.s.v[i] : ns.velocity(mode, c.s.v[i]);
   }
 };
