@@ -203,6 +203,7 @@ def field_pipeline(name, field, component=None, categorical=None, above_range=No
         _state["slab_extract_taken"] = True  # one slab extract per run, whichever pipeline comes first
         vtp = CreateExtractor("VTP", ExtractSurface(Input=cut), registrationName="slab_vtp")  # every phase
         vtp.Writer.FileName = os.path.join(s["extracts_dir"], "slab_{timestep:06d}.pvtp")
+        vtp.Writer.DataMode = "Binary"  # inline: see solver/io/particle_output.cpp
 
     return live_options(s, os.path.join(s["images_dir"], name))
 

@@ -45,6 +45,17 @@ list(LENGTH vtps n)
 if(NOT (n EQUAL 5))
   message(FATAL_ERROR "expected an extract per frame, found ${n}")
 endif()
+# Inline data only: ParaView 5.11 cannot read an appended section with Debian 12's current expat.
+file(GLOB slab_pieces ${WORK}/run/extracts/slab_000004/*.vtp)
+foreach(f ${vtps} ${slab_pieces})
+  file(READ ${f} head LIMIT 8192)
+  if(head MATCHES "<AppendedData")
+    message(FATAL_ERROR "${f} has an appended data section; extracts must be written inline (DataMode Binary)")
+  endif()
+endforeach()
+if(NOT slab_pieces)
+  message(FATAL_ERROR "the slab extract has no pieces in extracts/slab_000004/")
+endif()
 
 # The default: the render thread drops the frames it has no time for (never the solver's time);
 # what it renders is the same picture, and rendered + dropped frames are the output steps.

@@ -39,7 +39,9 @@ std::string ParticleWriter::write(Engine& e) {
   vtkNew<vtkXMLPolyDataWriter> w;
   w->SetFileName((path + ".tmp").c_str());  // renamed when whole: a watcher never reads half a file
   w->SetInputData(poly.wrap(frame_));
-  w->SetDataModeToAppended();
+  // Inline base64 blocks, not the appended section: VTK 9.2's readers (ParaView 5.11) cannot read
+  // appended data with expat's reparse deferral (expat 2.6, backported in Debian 12's 2.5.0-1+deb12u2).
+  w->SetDataModeToBinary();
   w->SetCompressorTypeToZLib();
   if (w->Write() != 1) {
     std::error_code ec;
