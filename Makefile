@@ -5,7 +5,7 @@ PRESET ?= $(if $(NVCC),cuda,cpu-release)
 BUILD  := build/$(PRESET)
 JOBS   ?= $(shell nproc)
 
-.PHONY: all deps build test demo validate validate-full bench bench-accuracy fuzz clean
+.PHONY: all deps build test demo validate validate-full bench bench-accuracy fuzz images clean
 
 all: build
 
@@ -44,6 +44,10 @@ bench-accuracy: build
 FUZZ_SECONDS ?= 600
 fuzz:
 	@scripts/fuzz.sh $(FUZZ_SECONDS)
+
+# The CPU and GPU container images, built and tested with podman (root; docker/build-and-test.sh).
+images:
+	@docker/build-and-test.sh all
 
 clean:
 	rm -rf build

@@ -5,23 +5,34 @@
 #                                      (cpp-httplib; Chromium for its browser tests; Node.js and npm,
 #                                      with which the front-end's npm packages install at build time)
 #   scripts/install-deps.sh --minimal  solver and tests only (no ParaView; libtiff for TIFF images)
+#   scripts/install-deps.sh --runtime  what a built poresph needs to run, with figures and reports
+#                                      (no compilers, no -dev packages; the container images' last stage)
 set -euo pipefail
+mode=${1:-}
 
-pkgs=(build-essential cmake ninja-build libomp-dev
-      libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
-      libgtest-dev libbenchmark-dev libtiff-dev)
+build=(build-essential cmake ninja-build libomp-dev
+       libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
+       libgtest-dev libbenchmark-dev libtiff-dev)
 # ParaView: its CMake package needs its Python modules and the -dev packages its exported
 # targets name (MPI, GLEW, NetCDF, HDF5); Xvfb renders headless, ffmpeg assembles MP4s, matplotlib
 # draws `poresph report`'s plots.
-[[ "${1:-}" == "--minimal" ]] || pkgs+=(paraview-dev python3-paraview libopenmpi-dev libglew-dev libnetcdf-dev
-                                        libhdf5-dev libx11-dev libfreetype-dev libboost-dev libxml2-dev xvfb ffmpeg
-                                        libcpp-httplib-dev chromium python3-matplotlib)
-# The dashboard's front-end builds with Debian 12's own nodejs (18) and npm; a Node.js that is
-# already there (with its own npm, as NodeSource's) is kept: Debian's npm would clash with it.
-if [[ "${1:-}" != "--minimal" ]]; then
-  command -v node >/dev/null || pkgs+=(nodejs)
-  command -v npm >/dev/null || pkgs+=(npm)
-fi
+full=(paraview-dev python3-paraview libopenmpi-dev libglew-dev libnetcdf-dev libhdf5-dev libx11-dev
+      libfreetype-dev libboost-dev libxml2-dev xvfb ffmpeg libcpp-httplib-dev chromium python3-matplotlib)
+# To run a built poresph: the libraries it links (ParaView's VTK comes with the paraview package),
+# the pipelines' ParaView Python modules, Xvfb, ffmpeg, matplotlib.
+runtime=(libgomp1 libtomlplusplus3 libtiff6 libcpp-httplib0.11 paraview python3-paraview xvfb ffmpeg
+         python3-matplotlib)
+case $mode in
+  --minimal) pkgs=("${build[@]}") ;;
+  --runtime) pkgs=("${runtime[@]}") ;;
+  "")
+    pkgs=("${build[@]}" "${full[@]}")
+    # The dashboard's front-end builds with Debian 12's own nodejs (18) and npm; a Node.js that is
+    # already there (with its own npm, as NodeSource's) is kept: Debian's npm would clash with it.
+    command -v node >/dev/null || pkgs+=(nodejs)
+    command -v npm >/dev/null || pkgs+=(npm) ;;
+  *) echo "install-deps: unknown option '$mode' (expected --minimal, --runtime or nothing)" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${pkgs[@]}"; do
