@@ -18,11 +18,9 @@ cd "$(dirname "$0")/.."
 what=${1:-all}
 [[ $what =~ ^(cpu|cuda|all)$ ]] || { echo "build-and-test: expected cpu, cuda or all, not '$what'" >&2; exit 2; }
 [[ $(id -u) -eq 0 ]] || { echo "build-and-test: rootful podman and debootstrap: run it as root" >&2; exit 2; }
-missing=()
-for p in podman debootstrap; do command -v $p >/dev/null || missing+=("$p"); done
-if [[ ${#missing[@]} -gt 0 ]]; then
-  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+# podman from Debian (docker/base-image.sh installs debootstrap when it needs it).
+command -v podman >/dev/null || { apt-get update -qq &&
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends podman >/dev/null; }
 podman=(podman --storage-driver vfs)
 out=build/docker
 mkdir -p "$out"

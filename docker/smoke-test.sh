@@ -9,7 +9,10 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 
-! ldd "$(command -v poresph)" | grep "not found"
+if ldd "$(command -v poresph)" | grep "not found"; then
+  echo "smoke-test: poresph misses the libraries above" >&2
+  exit 1
+fi
 poresph check "$cases/dam_break_3d.toml"
 sed -e 's/^end = 20.0/end = 0.01/' -e 's/^extract_interval = 1.0/extract_interval = 0.01/' \
   "$cases/dam_break_3d.toml" >db.toml
