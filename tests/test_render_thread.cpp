@@ -86,10 +86,12 @@ TEST(RenderThread, ARendererWithAShareRestsBetweenFrames) {
     t.submit(f, k, 0.1 * k);
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
-  const double span = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   t.finish();  // draws the last at once, without resting
+  // Timed after finish(): a frame may start between the last hand-over and finish() on a busy machine.
+  const double span = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_EQ(r.steps.back(), 39);
-  EXPECT_LE(static_cast<double>(r.steps.size()), span / 0.08 + 2) << r.steps.size() << " frames in " << span << " s";
+  // One frame per 80 ms, plus two that do not rest: the first (the solver waited for it) and the last.
+  EXPECT_LE(static_cast<double>(r.steps.size()), span / 0.08 + 3) << r.steps.size() << " frames in " << span << " s";
   EXPECT_GE(r.steps.size(), 3u);
 }
 
