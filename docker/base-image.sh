@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Makes a local Debian 12 base image for the builds where no registry is reachable:
-# debootstrap (minbase) from the Debian mirror, then `podman import`. Rootful podman, vfs storage.
+# debootstrap (minbase) from the Debian mirror, then `podman import`. Rootful podman, on the
+# storage docker/podman-storage.sh chooses.
 #   docker/base-image.sh [TAG]     default TAG localhost/poresph-base:debian12
 # The image holds the same packages as Docker Hub's debian:12 (minbase) and the same apt sources
 # (bookworm, bookworm-updates, bookworm-security); nothing of this machine goes into it.
 set -euo pipefail
 tag=${1:-localhost/poresph-base:debian12}
 mirror=${DEBIAN_MIRROR:-http://deb.debian.org/debian}
-podman=(podman --storage-driver vfs)
+source "$(dirname "${BASH_SOURCE[0]}")/podman-storage.sh"
 
 if "${podman[@]}" image exists "$tag"; then
   echo "base-image: $tag exists"

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Builds poresph's container images with podman (rootful, vfs storage, chroot isolation, host
-# network) and tests them. The tests run inside the builds: ctest in the build stage,
-# docker/smoke-test.sh as the image's user in the runtime stage (`podman run` needs a runtime
-# allowed to set rlimits, which some sandboxes refuse).
+# Builds poresph's container images with podman (rootful; overlay or vfs storage, as
+# docker/podman-storage.sh finds; chroot isolation, host network) and tests them. The tests run
+# inside the builds: ctest in the build stage, docker/smoke-test.sh as the image's user in the
+# runtime stage (`podman run` needs a runtime allowed to set rlimits, which some sandboxes refuse).
 #   docker/build-and-test.sh [cpu|cuda|all]            default all
 # Environment:
 #   PORESPH_BASE_IMAGE  a Debian 12 image; default docker.io/library/debian:12 where it can be
@@ -21,7 +21,7 @@ what=${1:-all}
 # podman from Debian (docker/base-image.sh installs debootstrap when it needs it).
 command -v podman >/dev/null || { apt-get update -qq &&
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends podman >/dev/null; }
-podman=(podman --storage-driver vfs)
+source "$(dirname "${BASH_SOURCE[0]}")/podman-storage.sh"
 out=build/docker
 mkdir -p "$out"
 
@@ -32,7 +32,7 @@ if [[ -z ${PORESPH_BASE_IMAGE:-} ]] && ! pullable "$base"; then
   base=localhost/poresph-base:debian12
   docker/base-image.sh "$base"
 fi
-echo "build-and-test: base image $base"
+echo "build-and-test: base image $base, $PORESPH_PODMAN_STORAGE storage"
 
 # A network that re-signs TLS (a proxy's own CA in /usr/local/share/ca-certificates) also re-signs
 # npm's registry: npm gets those certificates as a build secret, which never enters an image.

@@ -10,7 +10,7 @@ cuda=$(readlink -f "${CUDA_HOME:-/usr/local/cuda}")
 [[ -x $cuda/bin/nvcc ]] || { echo "cuda-toolkit-image: no nvcc in $cuda/bin (set CUDA_HOME)" >&2; exit 2; }
 version=$("$cuda/bin/nvcc" --version | sed -n 's/.*release \([0-9.]*\),.*/\1/p')
 tag=${1:-localhost/poresph-cuda-toolkit:$version}
-podman=(podman --storage-driver vfs)
+source "$(dirname "${BASH_SOURCE[0]}")/podman-storage.sh"
 if "${podman[@]}" image exists "$tag"; then echo "$tag"; exit 0; fi
 
 stage=$(mktemp -d /var/tmp/poresph-cuda.XXXXXX)

@@ -17,7 +17,7 @@ done
 [[ $# -ge 1 ]] || { echo "usage: $0 [-v HOSTDIR:PATH]... [--user UID[:GID]] [--entrypoint CMD] IMAGE [ARGS...]" >&2; exit 2; }
 image=$1
 shift
-podman=(podman --storage-driver vfs)
+source "$(dirname "${BASH_SOURCE[0]}")/podman-storage.sh"
 cfg() { "${podman[@]}" image inspect --format "$1" "$image"; }
 
 # The image's files, mounted where every user may traverse the path (podman's own is root's only).
