@@ -164,6 +164,7 @@ TEST(Engine, BlowUpStopsWithADiagnostic) {
   Case c = embedded("poiseuille_2d");
   c.scene.options.fixed_dt = 0.05;  // far beyond the acoustic limit (2.5e-3 s)
   c.scene.options.max_density_deviation = 0.1;
+  c.scene.options.stop_on_density_deviation = true;
   auto e = make_cpu_engine(c.scene);
   try {
     e->run_until(0.5);
@@ -175,6 +176,26 @@ TEST(Engine, BlowUpStopsWithADiagnostic) {
         << msg;
     EXPECT_NE(msg.find("at t = "), std::string::npos) << msg;
   }
+}
+
+// Past its bound the density is watched, not stopped (solver.on_density_deviation = "warn"): the
+// first step past it is kept with the particle, and the process's ledger holds the peak.
+TEST(Engine, DensityWatchKeepsTheFirstExceedance) {
+  Case c = embedded("poiseuille_2d");
+  c.scene.options.max_density_deviation = 1e-5;
+  take_density_deviation_peak();
+  auto e = make_cpu_engine(c.scene);
+  e->run_until(0.2);
+  const DensityWatch& w = e->density_watch();
+  ASSERT_TRUE(w.exceeded());
+  EXPECT_GT(w.first.value, 1e-5);
+  EXPECT_GE(w.peak, w.first.value);
+  EXPECT_LE(w.first.time, w.peak_time + 1e-12);
+  EXPECT_GT(w.first.time, 0.0);
+  EXPECT_NE(w.first.where.find("material water"), std::string::npos) << w.first.where;
+  EXPECT_DOUBLE_EQ(take_density_deviation_peak(), w.peak);
+  EXPECT_EQ(take_density_deviation_peak(), -1.0);  // taken
+  EXPECT_LE(e->stats().density_deviation_max, w.peak);
 }
 
 TEST(Engine, FieldsByName) {

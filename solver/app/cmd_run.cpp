@@ -7,6 +7,7 @@
 #include "catalyst/insitu_session.hpp"
 #include "image/image_report.hpp"
 #include "scene/case_file.hpp"
+#include "scene/compressibility.hpp"
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
 
@@ -29,7 +30,7 @@ int drive(Case& c, const RunOptions& opt) { return RunDriver(c, opt).run(); }
 
 }  // namespace
 
-int cmd_check(const std::string& path, const std::vector<std::string>& sets) {
+int cmd_check(const std::string& path, const std::vector<std::string>& sets, bool json) {
   Case c;
   if (!prepare(c, path, nullptr, sets)) return 2;
   try {
@@ -43,11 +44,24 @@ int cmd_check(const std::string& path, const std::vector<std::string>& sets) {
   }
   long fluid = 0;
   for (int m : c.scene.material) fluid += c.scene.materials[m].props.kind == MaterialKind::Fluid;
-  std::cout << path << ": case " << c.name << " is valid: " << c.scene.count() << " particles (" << fluid
-            << " fluid), " << c.scene.dimension << "D, support radius " << c.scene.options.support_radius
-            << " m, spacing " << c.scene.options.spacing << " m, end time " << c.end_time << " s\n";
-  for (const auto& image : c.images) std::cout << "image " << image_report_text(image);
-  return 0;
+  const CompressibilityEstimate estimate = estimate_compressibility(c);
+  const bool refused = c.compressibility_strict && estimate.exceeds();
+  if (json) {
+    nlohmann::json j = {{"file", path}, {"case", c.name}, {"valid", !refused}, {"particles", c.scene.count()},
+                        {"fluid_particles", fluid}, {"dimension", c.scene.dimension},
+                        {"compressibility", to_json(estimate)}, {"images", c.images}};
+    std::cout << j.dump(2) << "\n";
+  } else {
+    std::cout << path << ": case " << c.name << " is valid: " << c.scene.count() << " particles (" << fluid
+              << " fluid), " << c.scene.dimension << "D, support radius " << c.scene.options.support_radius
+              << " m, spacing " << c.scene.options.spacing << " m, end time " << c.end_time << " s\n";
+    for (const auto& image : c.images) std::cout << "image " << image_report_text(image);
+    std::cout << compressibility_text(estimate, path);
+  }
+  if (!refused) return 0;
+  std::cerr << "poresph: " << path << ": solver.compressibility = \"strict\" refuses a case whose estimated density variation ("
+            << 100 * estimate.total << " %) passes 1 %\n";
+  return 2;
 }
 
 int cmd_run(const std::string& path, const RunOptions& opt) {

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "engine/density_watch.hpp"
 #include "validation/validation_cases.hpp"
 
 namespace psph {
@@ -34,8 +35,12 @@ int cmd_validate(const std::vector<std::string>& names, bool full, bool json, co
     *ctx.log << c.name << ": " << c.description << (full ? " [full]" : "") << "\n";
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<ValidationRecord> recs;
+    take_density_deviation_peak();
     try {
       recs = c.run(ctx);
+      const double peak = take_density_deviation_peak();
+      if (peak >= 0)  // weak compressibility held (GUIDE §3): every fluid run of the case, every step
+        recs.push_back(make_record(c.name, "largest fluid density deviation |rho/rho0 - 1|", peak, 0.0, peak, c.density_bound));
     } catch (const ValidationUnavailable& e) {
       std::cerr << "poresph validate: " << c.name << " skipped: " << e.what() << "\n";
       ++skipped;

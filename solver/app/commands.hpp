@@ -21,7 +21,7 @@ struct RunOptions {
 // 4 runtime failure, 5 an output could not be written (disk full), 130 interrupted.
 int cmd_run(const std::string& case_path, const RunOptions& opt);
 int cmd_demo(const RunOptions& opt);
-int cmd_check(const std::string& case_path, const std::vector<std::string>& sets = {});
+int cmd_check(const std::string& case_path, const std::vector<std::string>& sets = {}, bool json = false);
 // Re-renders a run's figure sequences from its extracts (`pipelines` empty = the run's own).
 int cmd_figures(const std::string& run_dir, const std::vector<std::string>& pipelines);
 // Serves the dashboard of a run directory (finished, or still running in another process) until

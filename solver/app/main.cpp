@@ -63,12 +63,13 @@ int main(int argc, char** argv) {
   report->add_option("rundirs", report_dirs, "run directories (several: drawn together)")->required();
   report->add_option("--out", report_out, "folder for the plots (default RUNDIR/report; required for several runs)");
 
-  auto* check = app.add_subcommand("check", "validate a case file, run nothing");
-  check->add_option("case", case_path, "case file (TOML)")->required();
-  add_case_overrides(check, ro.sets);
-
   std::vector<std::string> names;
   bool full = false, json = false, quick = false, accuracy = false, stability = false;
+  auto* check = app.add_subcommand("check", "validate a case file, run nothing; estimate how far its fluids are compressed");
+  check->add_option("case", case_path, "case file (TOML)")->required();
+  check->add_flag("--json", json, "print the check and the compressibility estimate as JSON");
+  add_case_overrides(check, ro.sets);
+
   std::string vbackend = "cpu";
   auto* validate = app.add_subcommand("validate", "run the validation cases against their references");
   validate->add_option("names", names, "validation cases to run (default: all)");
@@ -106,7 +107,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   const auto dispatch = [&]() -> int {
     if (*run) return psph::cmd_run(case_path, ro);
-    if (*check) return psph::cmd_check(case_path, ro.sets);
+    if (*check) return psph::cmd_check(case_path, ro.sets, json);
     if (*serve) return psph::cmd_serve(run_dir, serve_port, serve_bind);
     if (*figures) return psph::cmd_figures(run_dir, fig_pipelines);
     if (*report) return psph::cmd_report(report_dirs, report_out);

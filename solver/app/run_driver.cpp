@@ -48,6 +48,11 @@ int RunDriver::run() {
 }
 
 int RunDriver::open() {
+  compressibility_ = estimate_compressibility(c_);
+  const std::string estimate = compressibility_text(compressibility_, c_.file);
+  if (compressibility_.exceeds()) std::cerr << estimate;
+  if (c_.compressibility_strict && compressibility_.exceeds())
+    return refuse(c_.file + ": solver.compressibility = \"strict\" refuses a case whose estimated density variation passes 1 %");
   try {
     engine_ = make_engine(c_.scene, opt_.backend);
     check_output_fields(c_, engine_->field_names());
@@ -119,6 +124,8 @@ void RunDriver::plan_outputs() {
     const std::string text = image_report_text(image);
     log("image " + text.substr(0, text.size() - 1));  // without its last newline
   }
+  std::istringstream estimate(compressibility_text(compressibility_, c_.file));
+  for (std::string line; std::getline(estimate, line);) log(line);
   for (const auto& note : restart_notes_) log(note);
   if (!restart_file_.empty())
     log("restarted from " + restart_file_ + " at t = " + std::to_string(engine_->time()) + " s, step " +
@@ -188,6 +195,7 @@ void RunDriver::loop() {
       const double t_end = c_.end_time;
       engine_->step(std::min({t_end, mon_.next(), ext_.next(), insitu_->active() ? vis_.next() : t_end}));
       outputs_due();
+      watch_density();
       progress_line();
       if (!rd_->write_failure().empty()) throw WriteError(rd_->write_failure());
       if (controls()) break;
@@ -240,6 +248,20 @@ void RunDriver::progress_line() {
   std::snprintf(line, sizeof line, "step %ld  t = %.6g s (%.1f %%)  dt = %.3g s  %.1f steps/s  time left %s",
                 engine_->steps(), t, 100 * t / t_end, engine_->last_dt(), sps, seconds_text(left).c_str());
   log(line);
+}
+
+void RunDriver::watch_density() {
+  const DensityWatch& w = engine_->density_watch();
+  if (density_warned_ || !w.exceeded()) return;
+  density_warned_ = true;
+  std::ostringstream m;
+  m.precision(3);
+  m << "the fluid's density is " << 100 * w.first.value << " % off its reference, past solver.max_density_deviation = "
+    << 100 * w.bound << " %, at t = " << w.first.time << " s, step " << w.first.step << w.first.where
+    << ": the flow is no longer weakly compressible; raise the sound speed or lower the drive (poresph check estimates both)";
+  log("warning: " + m.str());
+  supervision_->warn(m.str());
+  supervision_->report(*engine_, "running", wall_now(), true);
 }
 
 bool RunDriver::controls() {
@@ -379,6 +401,13 @@ nlohmann::json RunDriver::summary(double wall) const {
                       {"end_time", c_.end_time},
                       {"wall_seconds", wall},
                       {"particle_steps_per_second", steps * engine_->particles() / std::max(wall, 1e-9)}};
+  const DensityWatch& w = engine_->density_watch();
+  nlohmann::json first = nullptr;
+  if (w.exceeded())
+    first = {{"time", w.first.time}, {"step", w.first.step}, {"value", w.first.value}, {"particle", w.first.where}};
+  j["compressibility"] = to_json(compressibility_);
+  j["density_deviation"] = {{"bound", w.bound}, {"max", w.peak}, {"max_time", w.peak_time},
+                            {"max_step", w.peak_step}, {"first_exceeded", first}};
   if (!c_.images.empty()) j["images"] = c_.images;
   if (c_.stress_scale > 0) j["stress_scale"] = c_.stress_scale;  // physical per case units ([case])
   j["length_scale"] = c_.length_scale;

@@ -20,6 +20,7 @@
 #include "monitors/pressure_probes.hpp"
 #include "monitors/two_phase.hpp"
 #include "scene/case_file.hpp"
+#include "scene/compressibility.hpp"
 
 namespace psph {
 
@@ -39,6 +40,7 @@ class RunDriver {
   void loop();          // steps to the end, a stop or an interrupt
   void outputs_due();
   void progress_line();
+  void watch_density();  // a warning, once, when the fluid's density passes its bound
   bool controls();      // the dashboard's requests and a pause; true: leave the loop
   void take_requests();
   void monitor();
@@ -62,6 +64,7 @@ class RunDriver {
 
   Case& c_;
   const RunOptions& opt_;
+  CompressibilityEstimate compressibility_;
   std::unique_ptr<Engine> engine_;
   std::string restart_file_, dir_;
   std::vector<std::string> restart_notes_;
@@ -72,7 +75,7 @@ class RunDriver {
   std::unique_ptr<RunSupervision> supervision_;
   std::unique_ptr<DashboardServer> dashboard_;
   PassProfile outputs_;  // the time writing monitors, extracts, figures, checkpoints (app/profile_report.hpp)
-  bool extracts_ = false, paused_ = false, stop_ = false;
+  bool extracts_ = false, paused_ = false, stop_ = false, density_warned_ = false;
   double dt_mon_ = 0, dt_vis_ = 0, dt_ext_ = 0;
   OutputClock mon_{1, 0}, ext_{1, 0}, ck_{1, 0}, vis_{1, 0};
   long last_checkpoint_step_ = -1;

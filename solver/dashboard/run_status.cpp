@@ -15,6 +15,7 @@ namespace psph {
 nlohmann::json to_json(const RunStatus& s) {
   return {{"state", s.state},
           {"diagnostic", s.diagnostic},
+          {"warnings", s.warnings},
           {"case", s.case_name},
           {"backend", s.backend},
           {"device", s.device},
@@ -57,6 +58,7 @@ RunStatus status_from_json(const nlohmann::json& j) {
   get("visualisation_interval", s.visualisation_interval), get("extracts", s.extracts), get("pipelines", s.pipelines);
   get("checkpoints", s.checkpoints), get("pid", s.pid), get("updated", s.updated);
   if (j.contains("pid_start")) get("pid_start", s.pid_start);  // not in older run directories
+  if (j.contains("warnings")) get("warnings", s.warnings);
   return s;
 }
 

@@ -6,6 +6,7 @@
 // gone as lost (mark_lost).
 #include <chrono>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -16,6 +17,7 @@ struct RunStatus {
   // signal), unstable or failed (with `diagnostic`).
   std::string state = "starting";
   std::string diagnostic;
+  std::vector<std::string> warnings;  // what the run said once and goes on with (a density past its bound)
   std::string case_name, backend, device, precision;
   int dimension = 0, particles = 0;
   long step = 0;

@@ -7,6 +7,7 @@
 
 #include "core/instability.hpp"
 #include "core/pass_profile.hpp"
+#include "engine/density_watch.hpp"
 #include "rigid/rigid_bodies.hpp"
 #include "engine/scene.hpp"
 #include "stage/monitor_value.hpp"
@@ -33,6 +34,8 @@ class Engine {
   // Advances one step, never past `t_stop`.
   virtual void step(double t_stop) = 0;
   virtual StepStats stats() = 0;
+  // The fluid's largest density deviation so far, and its first step past the case's bound.
+  virtual const DensityWatch& density_watch() const = 0;
   // A registered field by name, copied to the host, components interleaved.
   virtual std::vector<double> field(const std::string& name) = 0;
   virtual std::vector<std::string> field_names() const = 0;

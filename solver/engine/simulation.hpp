@@ -29,6 +29,7 @@ template <int D, class B>
 class Simulation final : public Engine {
  public:
   explicit Simulation(const Scene& sc) : opt_(sc.options) {
+    watch_.bound = opt_.max_density_deviation;
     if (sc.dimension != D) throw std::logic_error("scene dimension mismatch");
     for (const auto& m : sc.materials) material_names_.push_back(m.name);
     setup_context(sc);
@@ -57,6 +58,7 @@ class Simulation final : public Engine {
   std::string device() const override { return B::device_name(); }
   std::vector<RigidBodyState> rigid_bodies() const override { return rigid_.bodies().all(); }
   PassProfile& profile() override { return profile_; }
+  const DensityWatch& density_watch() const override { return watch_; }
 
   // The step: kick, drift, forces at the new positions (eqs. 48, 49).
   void step(double t_stop) override {
@@ -205,6 +207,7 @@ class Simulation final : public Engine {
   void setup_rigid(const Scene& sc);
   double next_dt(double t_stop);
   void check_health();
+  void watch_density();
   std::string culprit(const BadParticle<D>& bad, int code);
   std::string when() const { return " at t = " + std::to_string(t_) + " s, step " + std::to_string(steps_); }
 
@@ -224,6 +227,7 @@ class Simulation final : public Engine {
   std::string dt_limit_ = "none";
   std::vector<std::string> material_names_;
   PassProfile profile_;
+  DensityWatch watch_;
 };
 
 }  // namespace psph

@@ -10,7 +10,10 @@ struct StepOptions {
   double dt_factor = 1;        // scales every time-step limit
   double fixed_dt = 0;         // > 0: constant step instead of the adaptive one
   double min_dt_ratio = 1e-4;  // a step below this fraction of the first step is a collapse
-  double max_density_deviation = 0;  // > 0: |rho/rho0 - 1| of a fluid particle that stops a run
+  // |rho/rho0 - 1| of a fluid particle past which the run warns (engine/density_watch.hpp), or
+  // stops when `stop_on_density_deviation`.
+  double max_density_deviation = 0.03;
+  bool stop_on_density_deviation = false;
 };
 
 }  // namespace psph

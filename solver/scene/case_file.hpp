@@ -52,6 +52,9 @@ struct Case {
   double end_time = 0;
   double after_percolation = -1;  // [time] after_percolation: the run ends this long after gas percolates (< 0: at end_time)
   OutputOptions output;
+  // [solver] compressibility = "strict": a case whose estimated density variation passes 1 % is
+  // refused (scene/compressibility.hpp); "warn" (default) runs it with a warning.
+  bool compressibility_strict = false;
   bool two_phase = false;  // a liquid and a gas: the two-phase monitors run (monitors/two_phase.hpp)
   MonitorRegion monitor_region;
   std::vector<Probe> probes;  // [[probe]]: pressure at fixed points (monitors/pressure_probes.hpp)

@@ -56,7 +56,7 @@ void check_fluid_keys(const CaseDraft& d) {
   const SolverOptions& o = d.c.scene.options;
   for (const char* key : {"density", "xsph", "artificial_viscosity", "laplacian_correction", "wall_noslip",
                           "wall_pressure", "implicit_viscosity", "background_pressure", "background_pressure_rate",
-                          "max_density_deviation"})
+                          "max_density_deviation", "on_density_deviation", "compressibility"})
     d.refuse_unless(d.has_fluid(), std::string("solver.") + key, "a material with kind = \"fluid\" for it to apply to");
   d.refuse_unless(o.density == DensityMethod::Continuity, "solver.density_diffusion",
                   "density = \"continuity\" for it to apply to (it diffuses the integrated density)");

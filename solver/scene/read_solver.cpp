@@ -57,7 +57,11 @@ void read_solver(CaseReader& top, CaseDraft& d) {
   o.fixed_dt = r.non_negative("dt", 0.0);
   o.neighbour_skin = r.non_negative("neighbour_skin", 0.1);
   if (o.neighbour_skin > 1) r.fail("neighbour_skin", "expected a fraction of the support radius in [0, 1]");
-  o.max_density_deviation = r.non_negative("max_density_deviation", 0.0);
+  o.max_density_deviation = r.non_negative("max_density_deviation", 0.03);
+  o.stop_on_density_deviation = r.choice("on_density_deviation", {"warn", "stop"}, "warn") == "stop";
+  if (o.stop_on_density_deviation && !(o.max_density_deviation > 0))
+    r.fail("max_density_deviation", "expected a bound > 0 with on_density_deviation = \"stop\"");
+  d.c.compressibility_strict = r.choice("compressibility", {"warn", "strict"}, "warn") == "strict";
   o.implicit_tolerance = r.positive("implicit_tolerance", 1e-6);
   if (o.implicit_tolerance >= 1) r.fail("implicit_tolerance", "expected a relative residual in (0, 1)");
   const double p_b = r.non_negative("background_pressure", 0.0);

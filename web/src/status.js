@@ -1,4 +1,4 @@
-// The run's status panel: case, state (with a failure's diagnostic), progress and speed.
+// The run's status panel: case, state (with a failure's diagnostic and the run's warnings), progress and speed.
 import { number, seconds } from './format.js';
 
 const $ = (id) => document.getElementById(id);
@@ -12,6 +12,9 @@ export function showStatus(s, connected) {
   $('device').textContent = `${s.backend} · ${s.device} · ${s.precision} · ${s.dimension}D`;
   $('diagnostic').hidden = !s.diagnostic;
   $('diagnostic').textContent = s.diagnostic ? `${state}: ${s.diagnostic}` : '';
+  const warnings = s.warnings || [];
+  $('warnings').hidden = warnings.length === 0;
+  $('warnings').textContent = warnings.map((w) => `warning: ${w}`).join('\n');
   $('step').textContent = String(s.step);
   $('time').textContent = `${number(s.time)} / ${number(s.end_time)} s`;
   $('dt').textContent = `${number(s.dt, 3)} s`;

@@ -31,6 +31,9 @@ try {
   const step0 = Number(await text('#step'));
   await until('the step to advance', async () => Number(await text('#step')) > step0);
   console.log(`status updates: step ${step0} -> ${await text('#step')}`);
+  // The density watch's warning (the case's bound is one the run passes at once).
+  await until('the density warning', async () => (await text('#warnings')).startsWith("warning: the fluid's density is"));
+  assert.ok(await page.locator('#warnings').isVisible());
 
   // A frame pushed after the page loaded, shown at once (the timeline follows the run).
   const framesAtLoad = await page.evaluate(() => window.dashboard.frames.frames.length);

@@ -1,0 +1,215 @@
+#include "scene/compressibility.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "scene/pore_grid.hpp"
+
+namespace psph {
+namespace {
+
+bool is_fluid(const Scene& sc, int m) { return sc.materials[m].props.kind == MaterialKind::Fluid; }
+
+// The extent of material m's particles along axis k, one spacing wide at least (m < 0: every fluid).
+double extent_of(const Scene& sc, int m, int k) {
+  double lo = 1e300, hi = -1e300;
+  const int D = sc.dimension;
+  for (int i = 0; i < sc.count(); ++i)
+    if (m < 0 ? is_fluid(sc, sc.material[i]) : sc.material[i] == m)
+      lo = std::min(lo, sc.x[i * D + k]), hi = std::max(hi, sc.x[i * D + k]);
+  return hi >= lo ? hi - lo + sc.options.spacing : 0.0;
+}
+
+std::string key(const SceneMaterial& m, const char* k) { return "materials." + m.name + "." + k; }
+
+std::string fixed(double v, int digits = 3) {
+  std::ostringstream o;
+  o.precision(digits);
+  o << v;
+  return o.str();
+}
+
+// Each fluid's terms.
+class Terms {
+ public:
+  Terms(const Case& c, const PoreGrid& pores) : c_(c), sc_(c.scene), pores_(pores) {}
+
+  void add(int f, std::vector<CompressibilityTerm>& out) const {
+    const SceneMaterial& m = sc_.materials[f];
+    const double rho = m.props.rest_density, cc = m.props.sound_speed, rc2 = rho * cc * cc;
+    auto term = [&](const std::string& what, const std::string& keys, const std::string& detail, double dp, double value,
+                    double power) {
+      if (value > 0) out.push_back({m.name, what, keys, detail, dp, value, power});
+    };
+    body_force(f, rc2, term);
+    for (const auto& r : sc_.force_regions) {
+      if (r.material != f) continue;
+      double dp = 0;
+      for (int k = 0; k < sc_.dimension; ++k) dp += rho * std::fabs(r.acceleration[k]) * (r.upper[k] - r.lower[k]);
+      term("pressure drive", "body_force_region", "rho |a| over the region's extent", dp, dp / rc2, 1);
+    }
+    const SceneOpenBoundary& ob = sc_.open_boundary;
+    if (ob.axis >= 0) {
+      const double pb = m.props.background_pressure;
+      const double dp = std::max(std::fabs(ob.inlet_pressure - pb), std::fabs(ob.outlet_pressure - pb));
+      term("pressure drive", "open_boundary.inlet_pressure, open_boundary.outlet_pressure", "largest imposed |p - p_b|",
+           dp, dp / rc2, 1);
+    }
+    capillary(f, rc2, term);
+    double traction = 0;
+    for (const auto& l : sc_.solid_loads)
+      if (!l.velocity)
+        for (int k = 0; k < sc_.dimension; ++k) traction = std::max(traction, std::fabs(l.value[k]));
+    term("confinement", "solid_load (traction)", "the largest traction on the solids, carried by the pore fluid",
+         traction, traction / rc2, 0);
+    speed(f, cc, term);
+  }
+
+ private:
+  // Along each axis with a force: a closed axis (or a fluid that does not span a periodic one) holds
+  // a hydrostatic head rho g H; a periodic one the pressure field of Stokes flow through its sections.
+  template <class Add>
+  void body_force(int f, double rc2, Add& term) const {
+    const SceneMaterial& m = sc_.materials[f];
+    for (int k = 0; k < sc_.dimension; ++k) {
+      const double g = std::fabs(m.body_force[k]);
+      if (g == 0) continue;
+      const double L = extent_of(sc_, f, k), rho = m.props.rest_density;
+      const double H = sc_.periodic[k] ? pores_.periodic_head(k) : L;
+      const std::string axis(1, "xyz"[k]);
+      const std::string how = H < 0 ? "" : sc_.periodic[k] ? "Stokes flow through the sections along periodic " + axis +
+                                                                  " (resistance ~ 1/A^2): head over " + fixed(H / L) + " of " + axis
+                                                           : "hydrostatic head over the fluid's height along " + axis;
+      const double h = H < 0 ? L : H;
+      term("body force", key(m, "body_force"), H < 0 ? "head over " + axis + ": no open path along it" : how,
+           rho * g * h, rho * g * h / rc2, 1);
+    }
+  }
+
+  // Laplace pressure (D - 1) sigma / r at the smallest radius an interface takes: one support radius.
+  template <class Add>
+  void capillary(int f, double rc2, Add& term) const {
+    const double sigma = sc_.options.surface_tension;
+    if (!(sigma > 0) || !c_.two_phase) return;
+    const double r = sc_.options.support_radius, dp = (sc_.dimension - 1) * sigma / r;
+    (void)f;
+    term("capillary pressure", "interface.surface_tension", "(D-1) sigma / r at r = the support radius", dp, dp / rc2, 0);
+  }
+
+  // (v/c)^2 at the largest speed the case implies: its initial and wall speeds, Stokes flow in its
+  // widest pore along a periodic force, free fall over a free surface's height, capillary jumps.
+  template <class Add>
+  void speed(int f, double cc, Add& term) const {
+    const SceneMaterial& m = sc_.materials[f];
+    const int D = sc_.dimension;
+    double v0 = 0;
+    for (int i = 0; i < sc_.count(); ++i) {
+      double s = 0;
+      for (int k = 0; k < D; ++k) s += sc_.v[i * D + k] * sc_.v[i * D + k];
+      v0 = std::max(v0, std::sqrt(s));
+    }
+    if (v0 > 0) term("speed", "initial velocities", "the largest initial or wall speed " + fixed(v0) + " m/s", 0, v0 * v0 / (cc * cc), 0);
+    const double nu = m.props.viscosity / m.props.rest_density;
+    for (int k = 0; k < D; ++k) {
+      const double g = std::fabs(m.body_force[k]);
+      if (g == 0) continue;
+      if (sc_.periodic[k] && nu > 0) {
+        const double w = pores_.widest(k), v = g * w * w / (8 * nu);  // plane Poiseuille peak
+        term("speed", key(m, "body_force"), "Stokes flow g w^2 / (8 nu) in the widest pore, w = " + fixed(w) + " m: " + fixed(v) + " m/s",
+             0, v * v / (cc * cc), 2);
+      } else if (!sc_.periodic[k] && pores_.free_surface()) {
+        const double v2 = 2 * g * extent_of(sc_, f, k);
+        term("speed", key(m, "body_force"), "free fall over the fluid's height: " + fixed(std::sqrt(v2)) + " m/s", 0,
+             v2 / (cc * cc), 1);
+      }
+    }
+    double mu_liquid = 0;
+    for (const auto& mm : sc_.materials)
+      if (mm.props.kind == MaterialKind::Fluid && mm.props.colour > 0) mu_liquid = std::max(mu_liquid, double(mm.props.viscosity));
+    if (c_.two_phase && sc_.options.surface_tension > 0 && mu_liquid > 0) {
+      const double v = sc_.options.surface_tension / mu_liquid;
+      term("speed", "interface.surface_tension", "capillary jumps at sigma / mu_liquid = " + fixed(v) + " m/s", 0, v * v / (cc * cc), 0);
+    }
+  }
+
+  const Case& c_;
+  const Scene& sc_;
+  const PoreGrid& pores_;
+};
+
+// The factor f on every drive for which sum(value * f^power) = limit (0 when the terms that do not
+// scale pass it alone).
+double drive_factor(const std::vector<CompressibilityTerm>& terms, const std::string& fluid, double limit) {
+  double a = 0, b = 0, c0 = 0;
+  for (const auto& t : terms) {
+    if (t.fluid != fluid) continue;
+    (t.drive_power == 1 ? a : t.drive_power == 2 ? b : c0) += t.value;
+  }
+  if (c0 >= limit || (a == 0 && b == 0)) return 0;
+  const double r = limit - c0;
+  return b > 0 ? (-a + std::sqrt(a * a + 4 * b * r)) / (2 * b) : r / a;
+}
+
+}  // namespace
+
+CompressibilityEstimate estimate_compressibility(const Case& c) {
+  const Scene& sc = c.scene;
+  const PoreGrid pores(sc);
+  const Terms terms(c, pores);
+  CompressibilityEstimate e;
+  for (int f = 0; f < int(sc.materials.size()); ++f) {
+    if (!is_fluid(sc, f)) continue;
+    terms.add(f, e.terms);
+    double sum = 0;
+    for (const auto& t : e.terms)
+      if (t.fluid == sc.materials[f].name) sum += t.value;
+    if (e.fluid.empty() || sum > e.total) e.total = sum, e.fluid = sc.materials[f].name, e.sound_speed = sc.materials[f].props.sound_speed;
+  }
+  e.sound_speed_needed = e.sound_speed * std::sqrt(std::max(e.total, e.limit) / e.limit);  // every term goes as 1/c^2
+  e.drive_factor = drive_factor(e.terms, e.fluid, e.limit);
+  return e;
+}
+
+std::string compressibility_text(const CompressibilityEstimate& e, const std::string& file) {
+  std::ostringstream o;
+  o.precision(3);
+  if (e.fluid.empty()) return "";
+  o << "compressibility: estimated largest density variation " << 100 * e.total << " % (" << e.fluid;
+  for (const auto& t : e.terms)
+    if (t.fluid == e.fluid) o << "; " << t.what << " " << 100 * t.value << " %";
+  o << ")" << (e.exceeds() ? "" : ", within the 1 % weak compressibility allows") << "\n";
+  for (const auto& t : e.terms)
+    o << "  " << t.fluid << ": " << t.what << " " << 100 * t.value << " % [" << t.keys << "]"
+      << (t.pressure > 0 ? ", dp = " + fixed(t.pressure) + " Pa" : "") << ": " << t.detail << "\n";
+  if (!e.exceeds()) return o.str();
+  std::string drives;
+  for (const auto& t : e.terms)
+    if (t.fluid == e.fluid && t.drive_power > 0 && drives.find(t.keys) == std::string::npos)
+      drives += (drives.empty() ? "" : ", ") + t.keys;
+  o << "warning: " << file << ": weak compressibility assumes about 1 %, this case implies " << 100 * e.total
+    << " %: either raise materials." << e.fluid << ".sound_speed from " << e.sound_speed << " to " << e.sound_speed_needed
+    << " m/s (the acoustic step shrinks by " << e.sound_speed_needed / e.sound_speed << "x: up to as many more steps)";
+  if (e.drive_factor > 0)
+    o << ", or scale the drive (" << drives << ") by " << e.drive_factor
+      << " (a permeability is linear in its drive in Stokes flow: the same answer)";
+  o << "\n";
+  return o.str();
+}
+
+nlohmann::json to_json(const CompressibilityEstimate& e) {
+  nlohmann::json terms = nlohmann::json::array();
+  for (const auto& t : e.terms)
+    terms.push_back({{"fluid", t.fluid}, {"term", t.what}, {"keys", t.keys}, {"detail", t.detail},
+                     {"pressure", t.pressure}, {"value", t.value}, {"drive_power", t.drive_power}});
+  return {{"estimate", e.total},
+          {"limit", e.limit},
+          {"exceeds", e.exceeds()},
+          {"fluid", e.fluid},
+          {"sound_speed", e.sound_speed},
+          {"sound_speed_needed", e.sound_speed_needed},
+          {"drive_factor", e.drive_factor},
+          {"terms", terms}};
+}
+
+}  // namespace psph

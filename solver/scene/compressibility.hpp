@@ -1,0 +1,42 @@
+#pragma once
+// How far a case's fluids will be compressed, estimated before it runs from what the case states
+// (GUIDE §3): weakly compressible SPH is right only while Δρ/ρ ≈ Δp/(ρ c²) + (v/c)² stays about
+// 1 %, where Δp gathers body forces over the fluid's extent, imposed pressures, capillary
+// pressures and loads on the solids around it. `poresph check` and `poresph run` print it.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/case_file.hpp"
+
+namespace psph {
+
+struct CompressibilityTerm {
+  std::string fluid;  // the material it compresses
+  std::string what;   // "body force", "pressure drive", "capillary pressure", "confinement", "speed"
+  std::string keys;   // the case keys that make it
+  std::string detail; // how it was counted
+  double pressure = 0;  // Δp (Pa); 0 for the speed term
+  double value = 0;     // its share of Δρ/ρ
+  double drive_power = 0;  // how it scales with the drive (body forces, imposed pressures): 1, 2, or 0 when it does not
+};
+
+struct CompressibilityEstimate {
+  double limit = 0.01;  // what weak compressibility allows
+  double total = 0;     // the largest fluid's sum of terms
+  std::string fluid;    // that fluid
+  std::vector<CompressibilityTerm> terms;  // every fluid's
+  double sound_speed = 0, sound_speed_needed = 0;  // that fluid's, and the one that would hold `limit`
+  double drive_factor = 0;  // the drives times this hold `limit` (0: no drive can: the other terms pass it alone)
+  bool exceeds() const { return total > limit; }
+};
+
+// From a case whose particles are built (scene/scene_builder.hpp).
+CompressibilityEstimate estimate_compressibility(const Case& c);
+// The estimate as lines for `check` and the run's log; a warning, naming the file and keys, when it
+// exceeds the limit.
+std::string compressibility_text(const CompressibilityEstimate& e, const std::string& file);
+nlohmann::json to_json(const CompressibilityEstimate& e);
+
+}  // namespace psph
