@@ -40,7 +40,7 @@ bench-accuracy: build
 	@$(BUILD)/solver/poresph bench --accuracy --json > bench/accuracy.json
 	@/usr/bin/python3 bench/plot_accuracy.py bench/accuracy.json bench/accuracy.png
 
-# The case-reader fuzzer under clang's libFuzzer for FUZZ_SECONDS (default 600; label fuzz).
+# The case-reader and image-reader fuzzers under clang's libFuzzer, FUZZ_SECONDS each (default 600; label fuzz).
 FUZZ_SECONDS ?= 600
 fuzz:
 	@scripts/fuzz.sh $(FUZZ_SECONDS)

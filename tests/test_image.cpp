@@ -19,6 +19,7 @@
 #include "image/phase_volume.hpp"
 #include "image/pore_components.hpp"
 #include "image/volume_source.hpp"
+#include "image_error_text.hpp"
 
 using namespace psph;
 namespace fs = std::filesystem;
@@ -85,15 +86,6 @@ std::vector<std::int64_t> all_labels(VolumeSource& v) {
       }
   }
   return out;
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const ImageError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 }  // namespace

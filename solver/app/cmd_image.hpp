@@ -29,6 +29,9 @@ struct ImageInfoOptions {
   std::uint64_t seed = 1;
   double porosity = 0.128, grains = 0.08;
   std::string variant = "one_pore";
+  std::string kind;  // generate voxel (image/voxel_benchmarks.hpp)
+  long width = 4, length = 6;
+  double radius = 14;
 };
 
 // The `image` command and its `info` and `slice` subcommands on `app`.

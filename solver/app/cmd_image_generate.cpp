@@ -6,6 +6,7 @@
 #include "app/cmd_image.hpp"
 #include "image/claystone_sample.hpp"
 #include "image/image_error.hpp"
+#include "image/voxel_benchmarks.hpp"
 
 namespace psph {
 
@@ -22,9 +23,32 @@ void add_generate_command(CLI::App* image, ImageInfoOptions& o) {
   clay->add_option("--grains", o.grains, "the fraction of mineral grains (default 0.08)")->check(CLI::Range(0.0, 0.35));
   clay->add_option("--variant", o.variant, "one_pore (default) or two_pores (Deptulski 2021 §5.5)")
       ->check(CLI::IsMember({"one_pore", "two_pores"}));
+  auto* voxel = gen->add_subcommand("voxel", "a voxel geometry with known flow along z (labels 0 pore, 1 solid): duct, "
+                                             "twin_ducts, tilted_slit, sphere_array, dead_ends, zigzag");
+  std::vector<std::string> kinds;
+  for (const char* const* k = voxel_benchmark_kinds(); *k; ++k) kinds.push_back(*k);
+  voxel->add_option("kind", o.kind, "the geometry")->required()->check(CLI::IsMember(kinds));
+  voxel->add_option("--out", o.out, "the NumPy file to write (.npy)")->required();
+  voxel->add_option("--width", o.width, "voxels across the duct or slit (default 4)");
+  voxel->add_option("--length", o.length, "voxels along z: duct, twin_ducts, tilted_slit (default 6)");
+  voxel->add_option("--size", o.size, "the periodic cell: tilted_slit, sphere_array (voxels)");
+  voxel->add_option("--radius", o.radius, "the sphere's radius (voxels): sphere_array");
 }
 
 int image_generate(const ImageInfoOptions& o) {
+  if (!o.kind.empty()) {
+    VoxelBenchmark b;
+    b.kind = o.kind, b.width = o.width, b.length = o.length, b.size = o.size, b.radius = o.radius;
+    try {
+      write_npy(o.out, make_voxel_benchmark(b));
+    } catch (const std::invalid_argument& e) {
+      throw ImageError(o.out, std::string("image generate voxel ") + o.kind + ": --" + e.what());
+    }
+    ImageInfoOptions info;
+    info.file = o.out;
+    std::cout << o.kind << " written; labels 0 pore, 1 solid; flow along z\n";
+    return image_info(info);
+  }
   ClaystoneSpec spec;
   spec.size = o.size, spec.seed = o.seed, spec.porosity = o.porosity, spec.grains = o.grains;
   spec.two_pores = o.variant == "two_pores";

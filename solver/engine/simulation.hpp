@@ -207,7 +207,7 @@ class Simulation final : public Engine {
   void setup_rigid(const Scene& sc);
   double next_dt(double t_stop);
   void check_health();
-  void watch_density();
+  void watch_density(double deviation);
   std::string culprit(const BadParticle<D>& bad, int code);
   std::string when() const { return " at t = " + std::to_string(t_) + " s, step " + std::to_string(steps_); }
 

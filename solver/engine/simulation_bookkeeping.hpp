@@ -87,32 +87,32 @@ double Simulation<D, B>::next_dt(double t_stop) {
 }
 
 // Summation density of a disordered start can be 20 % off for a few steps and recover, so the
-// density stops a run only when asked (solver.density_deviation = "stop"); otherwise it is watched.
+// density stops a run only when asked (solver.on_density_deviation = "stop"); otherwise it is
+// watched, from the same reduction.
 template <int D, class B>
 void Simulation<D, B>::check_health() {
   const StageScope scope("health check");
   const bool stop = opt_.stop_on_density_deviation && opt_.max_density_deviation > 0;
   const BadParticle<D> check{cx_.view(), cx_.grid, cx_.mats, Real(stop ? opt_.max_density_deviation : 1e30)};
-  const int bad = cx_.template max_of<int>(check);
-  if (bad == 0) return watch_density();
+  const double health = cx_.template max_of<Real>(HealthOf<D>{check});
+  const int bad = int(health / 16);
+  if (bad == 0) return watch_density(health);
   const std::string who = culprit(check, bad);
   if (bad == 4) throw InstabilityError("non-finite particle state (NaN or Inf)" + when() + who);
   if (bad == 3) throw InstabilityError("a particle left the domain through a closed side" + when() + who);
   if (bad == 2)
     throw InstabilityError("an elastic particle moves faster than its P-wave speed" + when() + who +
                            ": the solid went unstable (lower solver.dt_factor)");
-  if (bad == 1)
-    throw InstabilityError("a fluid density is more than " + std::to_string(100 * opt_.max_density_deviation) +
-                           " % off its reference" + when() + who +
-                           ": the flow is no longer weakly compressible (raise the sound speed or lower the drive)");
+  throw InstabilityError("a fluid density is more than " + std::to_string(100 * opt_.max_density_deviation) +
+                         " % off its reference" + when() + who +
+                         ": the flow is no longer weakly compressible (raise the sound speed or lower the drive)");
 }
 
-// The largest deviation so far and, once, the particle that first passed the bound (a reduction a
-// step; the culprit's download on that step only).
+// The largest deviation so far and, once, the particle that first passed the bound (its download
+// on that step only).
 template <int D, class B>
-void Simulation<D, B>::watch_density() {
+void Simulation<D, B>::watch_density(double dev) {
   if (!cx_.fluid) return;
-  const double dev = cx_.template max_of<Real>(DensityDeviationOf<D>{cx_.view(), cx_.mats});
   if (dev > watch_.peak) watch_.peak = dev, watch_.peak_time = t_, watch_.peak_step = steps_;
   note_density_deviation(dev);
   if (watch_.exceeded() || watch_.bound <= 0 || !(dev > watch_.bound)) return;

@@ -123,7 +123,7 @@ ClaystoneSample make_claystone(const ClaystoneSpec& spec) {
   return s;
 }
 
-void write_npy(const std::string& file, const ClaystoneSample& s) {
+void write_npy(const std::string& file, const LabelVolume& s) {
   std::string header = "{'descr': '|u1', 'fortran_order': True, 'shape': (" + std::to_string(s.size[0]) + ", " +
                        std::to_string(s.size[1]) + ", " + std::to_string(s.size[2]) + "), }";
   // NumPy format 1.0: magic, version, header length; the header padded with spaces to a multiple of

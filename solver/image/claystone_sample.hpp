@@ -22,14 +22,16 @@ struct ClaystoneSpec {
   bool two_pores = false;    // Deptulski §5.5's variant
 };
 
-struct ClaystoneSample {
+// A volume of labels: x fastest, then y, then z.
+struct LabelVolume {
   std::array<long, 3> size{0, 0, 0};
-  std::vector<std::uint8_t> label;  // x fastest, then y, then z (z = size - 1: the top)
+  std::vector<std::uint8_t> label;
 };
+using ClaystoneSample = LabelVolume;  // z = size - 1: the top
 
 ClaystoneSample make_claystone(const ClaystoneSpec& spec);
 
 // A uint8 NumPy file (Fortran order: x fastest, shape (nx, ny, nz)); whole or not at all.
-void write_npy(const std::string& file, const ClaystoneSample& s);
+void write_npy(const std::string& file, const LabelVolume& s);
 
 }  // namespace psph

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "image/image_error.hpp"
+#include "image/image_memory.hpp"
 
 namespace psph {
 namespace {
@@ -67,12 +68,32 @@ Extent extent_of(const VolumeSource& src, const PhaseSpec& spec, std::array<long
   return e;
 }
 
+// What reading holds at once, checked before anything large is allocated: each coarse voxel's
+// phase (1 byte) and, while its pore components are labelled, their label (4 bytes); a slice of
+// the file as read (at most 4 bytes a voxel) and decoded (8); a coarse slice's counts per phase;
+// the label tables.
+void check_memory(const VolumeSource& src, const Extent& e, const std::array<long, 3>& file_size, int phases) {
+  const std::array<long, 3> n = src.size();
+  const std::array<int, 3> axes = src.storage_axes();
+  const double coarse = double(e.coarse[0]) * double(e.coarse[1]) * double(e.coarse[2]);
+  const double slice = double(n[0]) * double(n[1]);
+  const double counts = double(e.coarse[axes[0]]) * double(e.coarse[axes[1]]) * phases;
+  const double bytes = 5 * coarse + 12 * slice + 4 * counts + 12.0 * kTable;
+  auto times = [](const std::array<long, 3>& v) {
+    return std::to_string(v[0]) + " x " + std::to_string(v[1]) + " x " + std::to_string(v[2]);
+  };
+  check_image_memory(src.file(), file_size, bytes,
+                     times(e.coarse) + " coarse voxels at 5 bytes each, slices of " + std::to_string(n[0]) + " x " +
+                         std::to_string(n[1]) + " voxels at 12 bytes each; coarsen or crop it");
+}
+
 }  // namespace
 
 PhaseVolume read_phases(VolumeSource& src, const PhaseSpec& spec) {
   if (spec.phases < 1 || spec.phases > 255) throw ImageError(src.file(), "expected 1 to 255 phases", "labels");
   PhaseVolume v;
   const Extent e = extent_of(src, spec, v.file_size);
+  check_memory(src, e, v.file_size, spec.phases);
   const std::array<int, 3> axes = src.storage_axes();
   const std::array<long, 3> n = src.size();
   v.size = e.coarse;

@@ -5,6 +5,7 @@
 #include <tiffio.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -90,11 +91,17 @@ void read_page(TIFF* t, const Page& p, std::vector<std::int64_t>& labels, const 
     std::uint32_t tw = 0, th = 0;
     TIFFGetField(t, TIFFTAG_TILEWIDTH, &tw);
     TIFFGetField(t, TIFFTAG_TILELENGTH, &th);
-    std::vector<unsigned char> tile(TIFFTileSize(t));
+    // A tiny file may claim tiles of 2^30 x 2^30: bound their width, decode only their rows in the page.
+    if (double(tw) > std::max(16.0 * std::ceil(p.width / 16.0), 1024.0))
+      throw ImageError(where, "expected tiles at most as wide as the page (rounded up to 16 pixels) or 1024 pixels, got " +
+                                  std::to_string(tw) + " x " + std::to_string(th));
     const tmsize_t row_bytes = TIFFTileRowSize(t);
+    std::vector<unsigned char> tile;
     for (std::uint32_t y0 = 0; y0 < p.height; y0 += th)
       for (std::uint32_t x0 = 0; x0 < p.width; x0 += tw) {
-        if (TIFFReadTile(t, tile.data(), x0, y0, 0, 0) < 0) throw failed();
+        tile.resize(std::size_t(row_bytes) * std::min(th, p.height - y0));
+        if (TIFFReadEncodedTile(t, TIFFComputeTile(t, x0, y0, 0, 0), tile.data(), tmsize_t(tile.size())) < 0)
+          throw failed();
         for (std::uint32_t y = y0; y < std::min(y0 + th, p.height); ++y)
           for (std::uint32_t x = x0; x < std::min(x0 + tw, p.width); ++x)
             put(x, y, sample(tile.data() + (y - y0) * row_bytes, x - x0, p.bits));

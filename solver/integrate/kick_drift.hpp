@@ -56,6 +56,19 @@ struct BadParticle {
   }
 };
 
+// BadParticle's code and the fluid's density deviation in one reduction: 16 code + min(|rho/rho0 - 1|,
+// 15), whose maximum is the worst code and, where every particle is healthy, the largest deviation.
+template <int D>
+struct HealthOf {
+  BadParticle<D> bad;
+  PSPH_HD Real operator()(int i) const {
+    const int code = bad(i);
+    if (code) return Real(16 * code);  // the deviation of a broken particle may be NaN
+    const Real dev = bad.mats.is_fluid(bad.s.material[i]) ? fabs(bad.s.rho[i] / bad.s.rho0[i] - Real(1)) : Real(0);
+    return dev < Real(15) ? dev : Real(15);
+  }
+};
+
 // The index of a particle for which BadParticle returns `code` (-1: none; the failure path only).
 template <int D>
 struct BadParticleIndex {

@@ -63,6 +63,17 @@ class Terms {
         for (int k = 0; k < sc_.dimension; ++k) traction = std::max(traction, std::fabs(l.value[k]));
     term("confinement", "solid_load (traction)", "the largest traction on the solids, carried by the pore fluid",
          traction, traction / rc2, 0);
+    double k_solid = 0;  // the softest elastic solid's bulk modulus
+    for (const auto& mm : sc_.materials)
+      if (mm.props.kind == MaterialKind::Elastic && (k_solid == 0 || mm.props.bulk_modulus < k_solid)) k_solid = mm.props.bulk_modulus;
+    // The solids feel p - p_ref (solid.reference_pressure, Terzaghi's effective stress).
+    const double pb = std::fabs(m.props.background_pressure + sc_.options.background_pressure_rate * c_.end_time -
+                                sc_.options.solid_reference_pressure);
+    if (k_solid > 0)  // the solids give way to it by p / K, and the fluid expands as much, at most to p / (rho c^2)
+      term("pressure on the solids", "solver.background_pressure, solver.background_pressure_rate, solid.reference_pressure",
+           "the background pressure the elastic solids take (at the end of the run), over the stiffer of the fluid and "
+           "the softest solid",
+           pb, pb / std::max(rc2, k_solid), 0);
     speed(f, cc, term);
   }
 
@@ -127,9 +138,12 @@ class Terms {
     double mu_liquid = 0;
     for (const auto& mm : sc_.materials)
       if (mm.props.kind == MaterialKind::Fluid && mm.props.colour > 0) mu_liquid = std::max(mu_liquid, double(mm.props.viscosity));
+    // A meniscus's Laplace pressure 2 sigma / w drives Poiseuille flow through a throat as long as it
+    // is wide at a peak sigma / (4 mu); Haines jumps overshoot it (about twice on the drainage
+    // validations, VALIDATION.md): sigma / (2 mu).
     if (c_.two_phase && sc_.options.surface_tension > 0 && mu_liquid > 0) {
-      const double v = sc_.options.surface_tension / mu_liquid;
-      term("speed", "interface.surface_tension", "capillary jumps at sigma / mu_liquid = " + fixed(v) + " m/s", 0, v * v / (cc * cc), 0);
+      const double v = sc_.options.surface_tension / (2 * mu_liquid);
+      term("speed", "interface.surface_tension", "capillary jumps at sigma / (2 mu_liquid) = " + fixed(v) + " m/s", 0, v * v / (cc * cc), 0);
     }
   }
 
