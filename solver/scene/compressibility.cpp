@@ -56,7 +56,7 @@ class Terms {
       term("pressure drive", "open_boundary.inlet_pressure, open_boundary.outlet_pressure", "largest imposed |p - p_b|",
            dp, dp / rc2, 1);
     }
-    capillary(f, rc2, term);
+    capillary(rc2, term);
     double traction = 0;
     for (const auto& l : sc_.solid_loads)
       if (!l.velocity)
@@ -100,11 +100,10 @@ class Terms {
 
   // Laplace pressure (D - 1) sigma / r at the smallest radius an interface takes: one support radius.
   template <class Add>
-  void capillary(int f, double rc2, Add& term) const {
+  void capillary(double rc2, Add& term) const {
     const double sigma = sc_.options.surface_tension;
     if (!(sigma > 0) || !c_.two_phase) return;
     const double r = sc_.options.support_radius, dp = (sc_.dimension - 1) * sigma / r;
-    (void)f;
     term("capillary pressure", "interface.surface_tension", "(D-1) sigma / r at r = the support radius", dp, dp / rc2, 0);
   }
 
