@@ -476,7 +476,7 @@ const std::vector<ValidationCase>& validation_cases() {
        two_phase_poiseuille},
       {"sphere_permeability", "Pazdniakou 2018 §4.2 permeability of periodic sphere arrays (Tables 2-3)",
        sphere_permeability, 0.01},
-      {"berea_permeability", "permeability of a Berea sandstone crop (micro-CT image) against its finer resolutions (2 and 3 particles per voxel)",
+      {"berea_permeability", "permeability of a Berea sandstone crop (micro-CT image) against a lattice-Boltzmann solve of the same voxels",
        berea_permeability_records, 0.01},
       {"voxel_permeability", "permeability of voxel ducts, slits and sphere arrays against exact values and a lattice-Boltzmann reference",
        voxel_permeability_records, 0.01},
