@@ -11,12 +11,12 @@ namespace {
 
 bool is_fluid(const Scene& sc, int m) { return sc.materials[m].props.kind == MaterialKind::Fluid; }
 
-// The extent of material m's particles along axis k, one spacing wide at least (m < 0: every fluid).
+// The extent of material m's particles along axis k, one spacing wide at least.
 double extent_of(const Scene& sc, int m, int k) {
   double lo = 1e300, hi = -1e300;
   const int D = sc.dimension;
   for (int i = 0; i < sc.count(); ++i)
-    if (m < 0 ? is_fluid(sc, sc.material[i]) : sc.material[i] == m)
+    if (sc.material[i] == m)
       lo = std::min(lo, sc.x[i * D + k]), hi = std::max(hi, sc.x[i * D + k]);
   return hi >= lo ? hi - lo + sc.options.spacing : 0.0;
 }
@@ -37,47 +37,59 @@ class Terms {
 
   void add(int f, std::vector<CompressibilityTerm>& out) const {
     const SceneMaterial& m = sc_.materials[f];
-    const double rho = m.props.rest_density, cc = m.props.sound_speed, rc2 = rho * cc * cc;
+    const double cc = m.props.sound_speed, rc2 = m.props.rest_density * cc * cc;
     auto term = [&](const std::string& what, const std::string& keys, const std::string& detail, double dp, double value,
                     double power) {
       if (value > 0) out.push_back({m.name, what, keys, detail, dp, value, power});
     };
     body_force(f, rc2, term);
+    drives(f, rc2, term);
+    capillary(rc2, term);
+    loads(f, rc2, term);
+    speed(f, cc, term);
+  }
+
+ private:
+  // Imposed pressures: the regions' body forces over their extent, the open boundaries' buffers.
+  template <class Add>
+  void drives(int f, double rc2, Add& term) const {
+    const Material& m = sc_.materials[f].props;
     for (const auto& r : sc_.force_regions) {
       if (r.material != f) continue;
       double dp = 0;
-      for (int k = 0; k < sc_.dimension; ++k) dp += rho * std::fabs(r.acceleration[k]) * (r.upper[k] - r.lower[k]);
+      for (int k = 0; k < sc_.dimension; ++k) dp += m.rest_density * std::fabs(r.acceleration[k]) * (r.upper[k] - r.lower[k]);
       term("pressure drive", "body_force_region", "rho |a| over the region's extent", dp, dp / rc2, 1);
     }
     const SceneOpenBoundary& ob = sc_.open_boundary;
-    if (ob.axis >= 0) {
-      const double pb = m.props.background_pressure;
-      const double dp = std::max(std::fabs(ob.inlet_pressure - pb), std::fabs(ob.outlet_pressure - pb));
-      term("pressure drive", "open_boundary.inlet_pressure, open_boundary.outlet_pressure", "largest imposed |p - p_b|",
-           dp, dp / rc2, 1);
-    }
-    capillary(rc2, term);
-    double traction = 0;
+    if (ob.axis < 0) return;
+    const double pb = m.background_pressure;
+    const double dp = std::max(std::fabs(ob.inlet_pressure - pb), std::fabs(ob.outlet_pressure - pb));
+    term("pressure drive", "open_boundary.inlet_pressure, open_boundary.outlet_pressure", "largest imposed |p - p_b|", dp,
+         dp / rc2, 1);
+  }
+
+  // Loads on the solids that the pore fluid carries: tractions, and the background pressure that
+  // the solids feel as p - p_ref (solid.reference_pressure, Terzaghi's effective stress) and give way
+  // to by p / K, the fluid expanding as much, at most to p / (rho c^2).
+  template <class Add>
+  void loads(int f, double rc2, Add& term) const {
+    double traction = 0, k_solid = 0;  // the largest traction, the softest elastic solid's bulk modulus
     for (const auto& l : sc_.solid_loads)
       if (!l.velocity)
         for (int k = 0; k < sc_.dimension; ++k) traction = std::max(traction, std::fabs(l.value[k]));
     term("confinement", "solid_load (traction)", "the largest traction on the solids, carried by the pore fluid",
          traction, traction / rc2, 0);
-    double k_solid = 0;  // the softest elastic solid's bulk modulus
     for (const auto& mm : sc_.materials)
       if (mm.props.kind == MaterialKind::Elastic && (k_solid == 0 || mm.props.bulk_modulus < k_solid)) k_solid = mm.props.bulk_modulus;
-    // The solids feel p - p_ref (solid.reference_pressure, Terzaghi's effective stress).
-    const double pb = std::fabs(m.props.background_pressure + sc_.options.background_pressure_rate * c_.end_time -
-                                sc_.options.solid_reference_pressure);
-    if (k_solid > 0)  // the solids give way to it by p / K, and the fluid expands as much, at most to p / (rho c^2)
-      term("pressure on the solids", "solver.background_pressure, solver.background_pressure_rate, solid.reference_pressure",
-           "the background pressure the elastic solids take (at the end of the run), over the stiffer of the fluid and "
-           "the softest solid",
-           pb, pb / std::max(rc2, k_solid), 0);
-    speed(f, cc, term);
+    if (!(k_solid > 0)) return;
+    const double pb = std::fabs(sc_.materials[f].props.background_pressure +
+                                sc_.options.background_pressure_rate * c_.end_time - sc_.options.solid_reference_pressure);
+    term("pressure on the solids", "solver.background_pressure, solver.background_pressure_rate, solid.reference_pressure",
+         "the background pressure the elastic solids take (at the end of the run), over the stiffer of the fluid and "
+         "the softest solid",
+         pb, pb / std::max(rc2, k_solid), 0);
   }
 
- private:
   // Along each axis with a force: a closed axis (or a fluid that does not span a periodic one) holds
   // a hydrostatic head rho g H; a periodic one the pressure field of Stokes flow through its sections.
   template <class Add>
