@@ -33,18 +33,19 @@ int drive(Case& c, const RunOptions& opt) { return RunDriver(c, opt).run(); }
 int cmd_check(const std::string& path, const std::vector<std::string>& sets, bool json) {
   Case c;
   if (!prepare(c, path, nullptr, sets)) return 2;
+  CompressibilityEstimate estimate;
   try {
     // What `run` builds before its run directory: the engine (on the CPU: the same fields on
     // every backend), the output fields it has, the pipelines and the fields they declare.
     check_output_fields(c, make_engine(c.scene, "cpu")->field_names());
     InSituSession pipelines(c, {}, "");
+    estimate = estimate_compressibility(c);
   } catch (const std::exception& e) {
     std::cerr << "poresph: " << e.what() << "\n";
     return 2;
   }
   long fluid = 0;
   for (int m : c.scene.material) fluid += c.scene.materials[m].props.kind == MaterialKind::Fluid;
-  const CompressibilityEstimate estimate = estimate_compressibility(c);
   const bool refused = c.compressibility_strict && estimate.exceeds();
   if (json) {
     nlohmann::json j = {{"file", path}, {"case", c.name}, {"valid", !refused}, {"particles", c.scene.count()},
@@ -52,7 +53,8 @@ int cmd_check(const std::string& path, const std::vector<std::string>& sets, boo
                         {"compressibility", to_json(estimate)}, {"images", c.images}};
     std::cout << j.dump(2) << "\n";
   } else {
-    std::cout << path << ": case " << c.name << " is valid: " << c.scene.count() << " particles (" << fluid
+    std::cout << path << ": case " << c.name << (refused ? " is refused (below): " : " is valid: ") << c.scene.count()
+              << " particles (" << fluid
               << " fluid), " << c.scene.dimension << "D, support radius " << c.scene.options.support_radius
               << " m, spacing " << c.scene.options.spacing << " m, end time " << c.end_time << " s\n";
     for (const auto& image : c.images) std::cout << "image " << image_report_text(image);

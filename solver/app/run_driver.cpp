@@ -48,7 +48,11 @@ int RunDriver::run() {
 }
 
 int RunDriver::open() {
-  compressibility_ = estimate_compressibility(c_);
+  try {
+    compressibility_ = estimate_compressibility(c_);
+  } catch (const std::exception& e) {
+    return refuse(std::string("the compressibility estimate: ") + e.what());
+  }
   const std::string estimate = compressibility_text(compressibility_, c_.file);
   if (compressibility_.exceeds()) std::cerr << estimate;
   if (c_.compressibility_strict && compressibility_.exceeds())

@@ -92,6 +92,7 @@ double Simulation<D, B>::next_dt(double t_stop) {
 template <int D, class B>
 void Simulation<D, B>::check_health() {
   const StageScope scope("health check");
+  if (cx_.n() == 0) return;  // the reduction of nothing is the lowest Real
   const bool stop = opt_.stop_on_density_deviation && opt_.max_density_deviation > 0;
   const BadParticle<D> check{cx_.view(), cx_.grid, cx_.mats, Real(stop ? opt_.max_density_deviation : 1e30)};
   const double health = cx_.template max_of<Real>(HealthOf<D>{check});
@@ -115,7 +116,8 @@ void Simulation<D, B>::watch_density(double dev) {
   if (!cx_.fluid) return;
   if (dev > watch_.peak) watch_.peak = dev, watch_.peak_time = t_, watch_.peak_step = steps_;
   note_density_deviation(dev);
-  if (watch_.exceeded() || watch_.bound <= 0 || !(dev > watch_.bound)) return;
+  // Compared as the culprit's search compares (in Real), so that it finds the particle.
+  if (watch_.exceeded() || watch_.bound <= 0 || !(Real(dev) > Real(watch_.bound))) return;
   const BadParticle<D> check{cx_.view(), cx_.grid, cx_.mats, Real(watch_.bound)};
   watch_.first.time = t_, watch_.first.step = steps_, watch_.first.value = dev;
   watch_.first.where = culprit(check, 1);

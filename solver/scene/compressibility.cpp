@@ -39,8 +39,8 @@ class Terms {
     const SceneMaterial& m = sc_.materials[f];
     const double cc = m.props.sound_speed, rc2 = m.props.rest_density * cc * cc;
     auto term = [&](const std::string& what, const std::string& keys, const std::string& detail, double dp, double value,
-                    double power) {
-      if (value > 0) out.push_back({m.name, what, keys, detail, dp, value, power});
+                    double power, double stiffness = 0) {
+      if (value > 0) out.push_back({m.name, what, keys, detail, dp, value, power, stiffness});
     };
     body_force(f, rc2, term);
     drives(f, rc2, term);
@@ -57,7 +57,9 @@ class Terms {
     for (const auto& r : sc_.force_regions) {
       if (r.material != f) continue;
       double dp = 0;
-      for (int k = 0; k < sc_.dimension; ++k) dp += m.rest_density * std::fabs(r.acceleration[k]) * (r.upper[k] - r.lower[k]);
+      for (int k = 0; k < sc_.dimension; ++k)
+        dp += m.rest_density * std::fabs(r.acceleration[k]) *
+              std::max(0.0, std::min(r.upper[k], sc_.upper[k]) - std::max(r.lower[k], sc_.lower[k]));
       term("pressure drive", "body_force_region", "rho |a| over the region's extent", dp, dp / rc2, 1);
     }
     const SceneOpenBoundary& ob = sc_.open_boundary;
@@ -87,7 +89,7 @@ class Terms {
     term("pressure on the solids", "solver.background_pressure, solver.background_pressure_rate, solid.reference_pressure",
          "the background pressure the elastic solids take (at the end of the run), over the stiffer of the fluid and "
          "the softest solid",
-         pb, pb / std::max(rc2, k_solid), 0);
+         pb, pb / std::max(rc2, k_solid), 0, k_solid);
   }
 
   // Along each axis with a force: a closed axis (or a fluid that does not span a periodic one) holds
@@ -163,6 +165,29 @@ class Terms {
   const PoreGrid& pores_;
 };
 
+// The fluid's terms at sound speed c (they were estimated at c0).
+double total_at(const std::vector<CompressibilityTerm>& terms, const std::string& fluid, double rho, double c0, double c) {
+  double sum = 0;
+  for (const auto& t : terms)
+    if (t.fluid == fluid) sum += t.stiffness > 0 ? t.pressure / std::max(rho * c * c, t.stiffness) : t.value * (c0 * c0) / (c * c);
+  return sum;
+}
+
+// The sound speed that holds `limit` (bisection: the terms fall with c, some only down to a floor);
+// 0 when none does.
+double sound_speed_needed(const std::vector<CompressibilityTerm>& terms, const std::string& fluid, double rho, double c0,
+                          double limit) {
+  if (total_at(terms, fluid, rho, c0, c0) <= limit) return c0;
+  double lo = c0, hi = c0;
+  for (int k = 0; k < 60 && total_at(terms, fluid, rho, c0, hi) > limit; ++k) hi *= 2;
+  if (total_at(terms, fluid, rho, c0, hi) > limit) return 0;
+  for (int k = 0; k < 60; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (total_at(terms, fluid, rho, c0, mid) > limit ? lo : hi) = mid;
+  }
+  return hi;
+}
+
 // The factor f on every drive for which sum(value * f^power) = limit (0 when the terms that do not
 // scale pass it alone).
 double drive_factor(const std::vector<CompressibilityTerm>& terms, const std::string& fluid, double limit) {
@@ -191,7 +216,10 @@ CompressibilityEstimate estimate_compressibility(const Case& c) {
       if (t.fluid == sc.materials[f].name) sum += t.value;
     if (e.fluid.empty() || sum > e.total) e.total = sum, e.fluid = sc.materials[f].name, e.sound_speed = sc.materials[f].props.sound_speed;
   }
-  e.sound_speed_needed = e.sound_speed * std::sqrt(std::max(e.total, e.limit) / e.limit);  // every term goes as 1/c^2
+  double rho = 0;
+  for (const auto& m : sc.materials)
+    if (m.name == e.fluid) rho = m.props.rest_density;
+  e.sound_speed_needed = sound_speed_needed(e.terms, e.fluid, rho, e.sound_speed, e.limit);
   e.drive_factor = drive_factor(e.terms, e.fluid, e.limit);
   return e;
 }
@@ -212,9 +240,12 @@ std::string compressibility_text(const CompressibilityEstimate& e, const std::st
   for (const auto& t : e.terms)
     if (t.fluid == e.fluid && t.drive_power > 0 && drives.find(t.keys) == std::string::npos)
       drives += (drives.empty() ? "" : ", ") + t.keys;
-  o << "warning: " << file << ": weak compressibility assumes about 1 %, this case implies " << 100 * e.total
-    << " %: either raise materials." << e.fluid << ".sound_speed from " << e.sound_speed << " to " << e.sound_speed_needed
-    << " m/s (the acoustic step shrinks by " << e.sound_speed_needed / e.sound_speed << "x: up to as many more steps)";
+  o << "warning: " << file << ": weak compressibility assumes about 1 %, this case implies " << 100 * e.total << " %: ";
+  if (e.sound_speed_needed > 0)
+    o << "raise materials." << e.fluid << ".sound_speed from " << e.sound_speed << " to " << e.sound_speed_needed
+      << " m/s (the acoustic step shrinks by " << e.sound_speed_needed / e.sound_speed << "x: up to as many more steps)";
+  else
+    o << "no sound speed of materials." << e.fluid << " holds it (the solids' compliance alone passes it)";
   if (e.drive_factor > 0)
     o << ", or scale the drive (" << drives << ") by " << e.drive_factor
       << " (a permeability is linear in its drive in Stokes flow: the same answer)";

@@ -20,6 +20,9 @@ struct CompressibilityTerm {
   double pressure = 0;  // Δp (Pa); 0 for the speed term
   double value = 0;     // its share of Δρ/ρ
   double drive_power = 0;  // how it scales with the drive (body forces, imposed pressures): 1, 2, or 0 when it does not
+  // How it scales with the sound speed c: as 1/c^2, or, where > 0, as pressure / max(rho c^2, this)
+  // (the solids' bulk modulus: past it, a faster sound no longer helps).
+  double stiffness = 0;
 };
 
 struct CompressibilityEstimate {
@@ -27,7 +30,7 @@ struct CompressibilityEstimate {
   double total = 0;     // the largest fluid's sum of terms
   std::string fluid;    // that fluid
   std::vector<CompressibilityTerm> terms;  // every fluid's
-  double sound_speed = 0, sound_speed_needed = 0;  // that fluid's, and the one that would hold `limit`
+  double sound_speed = 0, sound_speed_needed = 0;  // that fluid's, and the one that would hold `limit` (0: none can)
   double drive_factor = 0;  // the drives times this hold `limit` (0: no drive can: the other terms pass it alone)
   bool exceeds() const { return total > limit; }
 };

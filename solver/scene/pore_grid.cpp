@@ -22,7 +22,6 @@ PoreGrid::PoreGrid(const Scene& sc) : D_(sc.dimension), h_(sc.options.spacing) {
   }
   any_solid_ = std::count(cell_.begin(), cell_.end(), Solid) > 0;
   mark_free_surface(sc);
-  solid_distance();
 }
 
 std::array<int, 3> PoreGrid::cell_of(long i) const {
@@ -71,7 +70,7 @@ void PoreGrid::mark_free_surface(const Scene& sc) {
 
 // A breadth-first sweep from every solid cell that carries each cell's nearest solid cell along
 // (exact enough for a width: within a cell of the Euclidean distance).
-void PoreGrid::solid_distance() {
+void PoreGrid::solid_distance() const {
   distance_.assign(cell_.size(), -1.f);
   if (!any_solid_) return;
   std::vector<long> seed(cell_.size(), -1);
@@ -130,6 +129,7 @@ double PoreGrid::widest(int k) const {
       if (j != k) w = std::max(w, extent_[j]);
     return w;
   }
+  if (distance_.empty()) solid_distance();
   float far = 0;
   for (long i = 0; i < long(cell_.size()); ++i)
     if (cell_[i] == Fluid) far = std::max(far, distance_[i]);

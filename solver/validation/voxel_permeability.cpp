@@ -57,13 +57,14 @@ VoxelPermeability voxel_permeability(const VoxelBenchmark& g, int per_voxel, con
   const LabelVolume v = make_voxel_benchmark(g);
   const std::filesystem::path file =
       std::filesystem::temp_directory_path() / ("poresph-voxel-" + g.kind + "-" + std::to_string(::getpid()) + ".npy");
-  write_npy(file.string(), v);
   Case c;
   try {
+    write_npy(file.string(), v);
     c = load_case_text(case_text(g, v, file.string(), per_voxel), "voxel_" + g.kind + " (validation)");
     build_particles(c);
   } catch (...) {
-    std::filesystem::remove(file);
+    std::error_code ec;
+    std::filesystem::remove(file, ec);
     throw;
   }
   std::filesystem::remove(file);

@@ -12,7 +12,6 @@ namespace psph {
 struct VoxelPermeability {
   Permeability run;
   double K_voxels = 0;  // K / voxel^2, over the image's box
-  double density_deviation = 0;
 };
 
 // Writes the geometry to a temporary NumPy file, builds the case around it (an image inside a
