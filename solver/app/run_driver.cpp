@@ -53,8 +53,8 @@ int RunDriver::open() {
   } catch (const std::exception& e) {
     return refuse(std::string("the compressibility estimate: ") + e.what());
   }
-  const std::string estimate = compressibility_text(compressibility_, c_.file);
-  if (compressibility_.exceeds()) std::cerr << estimate;
+  compressibility_text_ = compressibility_text(compressibility_, c_.file);
+  if (compressibility_.exceeds()) std::cerr << compressibility_text_;
   if (c_.compressibility_strict && compressibility_.exceeds())
     return refuse(c_.file + ": solver.compressibility = \"strict\" refuses a case whose estimated density variation passes 1 %");
   try {
@@ -128,7 +128,7 @@ void RunDriver::plan_outputs() {
     const std::string text = image_report_text(image);
     log("image " + text.substr(0, text.size() - 1));  // without its last newline
   }
-  std::istringstream estimate(compressibility_text(compressibility_, c_.file));
+  std::istringstream estimate(compressibility_text_);
   for (std::string line; std::getline(estimate, line);) log(line);
   for (const auto& note : restart_notes_) log(note);
   if (!restart_file_.empty())

@@ -65,6 +65,7 @@ class RunDriver {
   Case& c_;
   const RunOptions& opt_;
   CompressibilityEstimate compressibility_;
+  std::string compressibility_text_;  // as `check` prints it: to stderr past 1 %, and to log.txt
   std::unique_ptr<Engine> engine_;
   std::string restart_file_, dir_;
   std::vector<std::string> restart_notes_;

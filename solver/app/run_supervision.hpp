@@ -22,8 +22,8 @@ class RunSupervision {
   // The final state (completed, stopped, interrupted, unstable, failed), always written.
   void finish(const Engine& e, const std::string& state, const std::string& diagnostic, double wall);
   void set_intervals(double monitor, double extract, double visualisation);
-  void set_end_time(double t) { base_.end_time = t; }
-  void warn(const std::string& w) { base_.warnings.push_back(w); }  // in every status from the next  // time.after_percolation moved it
+  void set_end_time(double t) { base_.end_time = t; }  // time.after_percolation moved it
+  void warn(const std::string& w) { base_.warnings.push_back(w); }  // in every status from the next
   // Requests that arrived (unreadable ones go to `log`).
   std::vector<ControlRequest> requests(const std::function<void(const std::string&)>& log);
 

@@ -56,6 +56,16 @@ struct BadParticle {
   }
 };
 
+// |rho/rho0 - 1| of fluid particles (weak-compressibility monitor).
+template <int D>
+struct DensityDeviationOf {
+  ParticleView<D> s;
+  MaterialTable<D> mats;
+  PSPH_HD Real operator()(int i) const {
+    return mats.is_fluid(s.material[i]) ? fabs(s.rho[i] / s.rho0[i] - Real(1)) : Real(0);
+  }
+};
+
 // BadParticle's code and the fluid's density deviation in one reduction: 16 code + min(|rho/rho0 - 1|,
 // 15), whose maximum is the worst code and, where every particle is healthy, the largest deviation.
 template <int D>
@@ -64,7 +74,7 @@ struct HealthOf {
   PSPH_HD Real operator()(int i) const {
     const int code = bad(i);
     if (code) return Real(16 * code);  // the deviation of a broken particle may be NaN
-    const Real dev = bad.mats.is_fluid(bad.s.material[i]) ? fabs(bad.s.rho[i] / bad.s.rho0[i] - Real(1)) : Real(0);
+    const Real dev = DensityDeviationOf<D>{bad.s, bad.mats}(i);
     return dev < Real(15) ? dev : Real(15);
   }
 };
@@ -95,14 +105,4 @@ struct KineticEnergyOf {
     return mats.is_dynamic(s.material[i]) ? Real(0.5) * s.m[i] * norm2(s.v[i]) : Real(0);
   }
 };
-// |rho/rho0 - 1| of fluid particles (weak-compressibility monitor).
-template <int D>
-struct DensityDeviationOf {
-  ParticleView<D> s;
-  MaterialTable<D> mats;
-  PSPH_HD Real operator()(int i) const {
-    return mats.is_fluid(s.material[i]) ? fabs(s.rho[i] / s.rho0[i] - Real(1)) : Real(0);
-  }
-};
-
 }  // namespace psph

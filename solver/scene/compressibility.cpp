@@ -33,7 +33,14 @@ std::string fixed(double v, int digits = 3) {
 // Each fluid's terms.
 class Terms {
  public:
-  Terms(const Case& c, const PoreGrid& pores) : c_(c), sc_(c.scene), pores_(pores) {}
+  Terms(const Case& c, const PoreGrid& pores) : c_(c), sc_(c.scene), pores_(pores) {
+    const int D = sc_.dimension;
+    for (int i = 0; i < sc_.count(); ++i) {
+      double s = 0;
+      for (int k = 0; k < D; ++k) s += sc_.v[i * D + k] * sc_.v[i * D + k];
+      v0_ = std::max(v0_, std::sqrt(s));
+    }
+  }
 
   void add(int f, std::vector<CompressibilityTerm>& out) const {
     const SceneMaterial& m = sc_.materials[f];
@@ -127,13 +134,7 @@ class Terms {
   void speed(int f, double cc, Add& term) const {
     const SceneMaterial& m = sc_.materials[f];
     const int D = sc_.dimension;
-    double v0 = 0;
-    for (int i = 0; i < sc_.count(); ++i) {
-      double s = 0;
-      for (int k = 0; k < D; ++k) s += sc_.v[i * D + k] * sc_.v[i * D + k];
-      v0 = std::max(v0, std::sqrt(s));
-    }
-    if (v0 > 0) term("speed", "initial velocities", "the largest initial or wall speed " + fixed(v0) + " m/s", 0, v0 * v0 / (cc * cc), 0);
+    if (v0_ > 0) term("speed", "initial velocities", "the largest initial or wall speed " + fixed(v0_) + " m/s", 0, v0_ * v0_ / (cc * cc), 0);
     const double nu = m.props.viscosity / m.props.rest_density;
     for (int k = 0; k < D; ++k) {
       const double g = std::fabs(m.body_force[k]);
@@ -163,6 +164,7 @@ class Terms {
   const Case& c_;
   const Scene& sc_;
   const PoreGrid& pores_;
+  double v0_ = 0;  // the largest initial speed of any particle (m/s)
 };
 
 // The fluid's terms at sound speed c (they were estimated at c0).

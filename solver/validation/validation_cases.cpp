@@ -428,7 +428,7 @@ std::vector<ValidationRecord> settling_cylinder(const ValidationContext& ctx) {
 // duct (what leaks through the wall between them).
 std::vector<ValidationRecord> voxel_permeability_records(const ValidationContext& ctx) {
   std::vector<ValidationRecord> out;
-  std::map<int, double> duct4;  // the 4-voxel duct's K at each resolution
+  std::map<std::pair<long, int>, double> duct;  // a square duct's K by width and resolution
   for (const VoxelReference& ref : voxel_references()) {
     const int finest = ctx.full ? ref.finest : std::min(ref.finest, 2);
     for (int n = 1; n <= finest; ++n) {
@@ -445,10 +445,11 @@ std::vector<ValidationRecord> voxel_permeability_records(const ValidationContext
       if (ref.exact)
         out.push_back(make_record("voxel_permeability", "|K/K_exact - 1|, " + at, p.K_voxels, exact,
                                   std::fabs(p.K_voxels / exact - 1), tol));
-      if (ref.geometry.kind == "duct" && ref.geometry.width == 4) duct4[n] = p.K_voxels;
-      if (ref.geometry.kind == "twin_ducts" && duct4.count(n)) {
-        // Each duct carries the single duct's flow: K_twin = 2 (6 x 6) / (11 x 6) K_duct.
-        const double alone = duct4[n] * 2 * 36 / 66;
+      const long w = ref.geometry.width;
+      if (ref.geometry.kind == "duct") duct[{w, n}] = p.K_voxels;
+      if (ref.geometry.kind == "twin_ducts" && duct.count({w, n})) {
+        // Each duct carries the single duct's flow: K_twin = 2 (w+2)^2 / ((2w+3)(w+2)) K_duct.
+        const double alone = duct[{w, n}] * 2 * double(w + 2) / double(2 * w + 3);
         out.push_back(make_record("voxel_permeability", "flow through the wall: |K_twin / (2 K_duct A_duct/A_twin) - 1|, " + at,
                                   p.K_voxels, alone, std::fabs(p.K_voxels / alone - 1), n == 1 ? 0.06 : 0.005));
       }
