@@ -6,6 +6,7 @@ file(MAKE_DIRECTORY ${WORK})
 file(READ ${SRC}/cases/drainage_2d.toml drain)
 string(REPLACE "end = 0.25" "end = 0.004" t "${drain}")
 string(REPLACE "monitor_interval = 0.005" "monitor_interval = 0.0005" t "${t}")
+string(REPLACE "after_percolation = 0.0\n" "" t "${t}")  # run on past the percolation
 string(APPEND t "\n[[geometry]]\nshape = \"box\"\nlower = [2.0e-3, 0.0]\nupper = [2.4e-3, 9.6e-3]\nmaterial = \"gas\"\n")
 file(WRITE ${WORK}/drain.toml "${t}")
 file(READ ${SRC}/cases/poiseuille_2d.toml flow)

@@ -141,6 +141,7 @@ endif()
 file(READ ${SRC}/cases/drainage_2d.toml drain)
 string(REPLACE "end = 0.25" "end = 0.002" t "${drain}")
 string(REPLACE "monitor_interval = 0.005" "monitor_interval = 0.001" t "${t}")
+string(REPLACE "after_percolation = 0.0\n" "" t "${t}")  # run on past the percolation
 string(APPEND t "\n[[geometry]]\nshape = \"box\"\nlower = [2.0e-3, 0.0]\nupper = [2.4e-3, 9.6e-3]\nmaterial = \"gas\"\n")
 file(WRITE ${WORK}/drain.toml "${t}")
 execute_process(COMMAND ${PORESPH} run ${WORK}/drain.toml --out ${WORK}/drain_run --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE err)

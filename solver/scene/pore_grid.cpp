@@ -122,6 +122,22 @@ double PoreGrid::periodic_head(int k) const {
   return hi - lo;
 }
 
+double PoreGrid::periodic_permeability(int k) const {
+  std::vector<double> area(n_[k], 0.0);
+  long fluid = 0;
+  for (long i = 0; i < long(cell_.size()); ++i)
+    if (cell_[i] == Fluid) area[cell_of(i)[k]] += 1, ++fluid;
+  const double cell_area = std::pow(h_, D_ - 1), box = double(cell_.size()) / n_[k] * cell_area;
+  double resistance = 0;  // <1 / C> over the sections
+  for (double a : area) {
+    if (a == 0) return 0;
+    const double A = a * cell_area, C = D_ == 3 ? A * A / (8 * M_PI) : A * A * A / 12;
+    resistance += 1 / C / n_[k];
+  }
+  const double porosity = double(fluid) / double(cell_.size()), w = widest(k);
+  return std::min(1 / (box * resistance), porosity * w * w / (D_ == 3 ? 32.0 : 12.0));
+}
+
 double PoreGrid::widest(int k) const {
   if (!any_solid_) {
     double w = 0;

@@ -17,6 +17,11 @@ class PoreGrid {
   // through the fluid's sections A(z) in series (hydraulic resistance ~ 1/A^2, the pressure
   // periodic): max - min of the integral of (1 - R/<R>) dz, in m; -1 when a section holds no fluid.
   double periodic_head(int k) const;
+  // An upper bound of the permeability along periodic axis k (m^2): the sections in series, each
+  // one channel of its whole area (Poiseuille conductance A^2 / (8 pi) in 3D, w^3 / 12 in 2D), and
+  // no more than a channel as wide as the widest pore at the fluid's porosity; 0 when a section
+  // holds no fluid.
+  double periodic_permeability(int k) const;
   // Twice the largest distance from a fluid cell to the nearest wall or solid surface (m); the
   // domain's extent across k where there is none.
   double widest(int k) const;
