@@ -127,8 +127,8 @@ class Terms {
   }
 
   // (v/c)^2 at the largest speed the case implies: its initial and wall speeds, Stokes flow in its
-  // widest pore along a periodic force, free fall over a free surface's height; and the impacts of
-  // capillary jumps (v/c).
+  // widest pore along a periodic force; and impacts (v/c): free fall over a free surface's height,
+  // capillary jumps.
   template <class Add>
   void speed(int f, double cc, Add& term) const {
     const SceneMaterial& m = sc_.materials[f];
@@ -143,9 +143,11 @@ class Terms {
         term("speed", key(m, "body_force"), "Stokes flow g w^2 / (8 nu) in the widest pore, w = " + fixed(w) + " m: " + fixed(v) + " m/s",
              0, v * v / (cc * cc), 2);
       } else if (!sc_.periodic[k] && pores_.free_surface()) {
-        const double v2 = 2 * g * extent_of(sc_, f, k);
-        term("speed", key(m, "body_force"), "free fall over the fluid's height: " + fixed(std::sqrt(v2)) + " m/s", 0,
-             v2 / (cc * cc), 1);
+        // Free fall over the fluid's height, then the front strikes a wall: an impact, v/c
+        // (measured on dam_break_3d: 4.3 % at c = 20 m/s, where (v/c)^2 gave 0.5 %).
+        const double v = std::sqrt(2 * g * extent_of(sc_, f, k));
+        term("impact", key(m, "body_force"), "free fall over the fluid's height at " + fixed(v) + " m/s onto a wall, rho c v: v/c",
+             0, v / cc, 0.5, 0, 1);
       }
     }
     double mu_liquid = 0;
