@@ -127,51 +127,75 @@ class Terms {
   }
 
   // (v/c)^2 at the largest speed the case implies: its initial and wall speeds, Stokes flow in its
-  // widest pore along a periodic force; and impacts (v/c): free fall over a free surface's height,
-  // capillary jumps.
+  // widest pore along a periodic force, and, in a drop or bubble that no drive pushes, the flow that
+  // surface tension drives at up to sigma / (2 mu_liquid) (within a factor of 2 on the Laplace
+  // bubble and the sessile drop, VALIDATION.md).
   template <class Add>
   void speed(int f, double cc, Add& term) const {
     const SceneMaterial& m = sc_.materials[f];
-    const int D = sc_.dimension;
     if (v0_ > 0) term("speed", "initial velocities", "the largest initial or wall speed " + fixed(v0_) + " m/s", 0, v0_ * v0_ / (cc * cc), 0);
     const double nu = m.props.viscosity / m.props.rest_density;
+    for (int k = 0; k < sc_.dimension; ++k) {
+      const double g = std::fabs(m.body_force[k]);
+      if (g == 0 || !sc_.periodic[k] || !(nu > 0)) continue;
+      const double w = pores_.widest(k), v = g * w * w / (8 * nu);  // plane Poiseuille peak
+      term("speed", key(m, "body_force"), "Stokes flow g w^2 / (8 nu) in the widest pore, w = " + fixed(w) + " m: " + fixed(v) + " m/s",
+           0, v * v / (cc * cc), 2);
+    }
+    const double mu = liquid_viscosity();
+    if (!c_.two_phase || !(sc_.options.surface_tension > 0) || !(mu > 0) || drive_pressure() > 0) return;
+    const double v = sc_.options.surface_tension / (2 * mu);
+    term("speed", "interface.surface_tension", "capillary flow at sigma / (2 mu_liquid) = " + fixed(v) + " m/s", 0,
+         v * v / (cc * cc), 0);
+  }
+
+  // Impacts: a fluid that moves is stopped at once and compressed by rho c v (Joukowsky), v/c of its
+  // density, not (v/c)^2.
+  //  - Free fall over a free surface's height onto a wall, sqrt(2 g H) (measured on dam_break_3d:
+  //    4.3 % at c = 20 m/s, where (v/c)^2 gave 0.5 %).
+  //  - Driven through pores, a Haines jump: the Laplace pressure 2 sigma / w drives the liquid
+  //    through a throat about as long as wide at the mean Poiseuille speed sigma / (6 mu) (slit, 2D)
+  //    or sigma / (8 mu) (pipe, 3D) until the meniscus stops against the next throat. Measured, 1/c
+  //    rather than 1/c^2: drainage_2d 5.1 / 3.0 / 1.9 % at c = 1 / 2 / 3 m/s before the gas
+  //    percolates (estimate 6.7 / 3.3 / 2.2 %), capillary_entry_2d 5.4 / 2.3 % at 1 / 2 m/s,
+  //    berea_drainage 2.6 % at 2 m/s (estimate 2.5 %).
+  //  - Once a driven gas percolates, it runs through the open path at up to sqrt(2 dp / rho) (the
+  //    drive turned into speed) and stops against water and grains (drainage_2d: 22-30 % at c =
+  //    1 m/s, 10.9 % at 2 m/s); a run that ends at percolation (time.after_percolation = 0) never
+  //    sees it.
+  template <class Add>
+  void impact(int f, double cc, Add& term) const {
+    const SceneMaterial& m = sc_.materials[f];
+    const int D = sc_.dimension;
     for (int k = 0; k < D; ++k) {
       const double g = std::fabs(m.body_force[k]);
-      if (g == 0) continue;
-      if (sc_.periodic[k] && nu > 0) {
-        const double w = pores_.widest(k), v = g * w * w / (8 * nu);  // plane Poiseuille peak
-        term("speed", key(m, "body_force"), "Stokes flow g w^2 / (8 nu) in the widest pore, w = " + fixed(w) + " m: " + fixed(v) + " m/s",
-             0, v * v / (cc * cc), 2);
-      } else if (!sc_.periodic[k] && pores_.free_surface()) {
-        // Free fall over the fluid's height, then the front strikes a wall: an impact, v/c
-        // (measured on dam_break_3d: 4.3 % at c = 20 m/s, where (v/c)^2 gave 0.5 %).
-        const double v = std::sqrt(2 * g * extent_of(sc_, f, k));
-        term("impact", key(m, "body_force"), "free fall over the fluid's height at " + fixed(v) + " m/s onto a wall, rho c v: v/c",
-             0, v / cc, 0.5, 0, 1);
-      }
+      if (g == 0 || sc_.periodic[k] || !pores_.free_surface()) continue;
+      const double v = std::sqrt(2 * g * extent_of(sc_, f, k));
+      term("impact", key(m, "body_force"), "free fall over the fluid's height at " + fixed(v) + " m/s onto a wall, rho c v: v/c",
+           0, v / cc, 0.5, 0, 1);
     }
-    double mu_liquid = 0;
-    for (const auto& mm : sc_.materials)
-      if (mm.props.kind == MaterialKind::Fluid && mm.props.colour > 0) mu_liquid = std::max(mu_liquid, double(mm.props.viscosity));
-    // Driven through pores, a Haines jump: the Laplace pressure 2 sigma / w drives the liquid through
-    // a throat about as long as wide at the mean Poiseuille speed sigma / (6 mu) (slit, 2D) or
-    // sigma / (8 mu) (pipe, 3D), and the meniscus stops against the next throat at rho c v
-    // (Joukowsky): v/c. Measured, 1/c rather than 1/c^2: drainage_2d 5.1 / 3.0 / 1.9 % at c = 1 / 2 /
-    // 3 m/s before the gas percolates (estimate 6.7 / 3.3 / 2.2 %), capillary_entry_2d 5.4 / 2.3 %
-    // at 1 / 2 m/s, berea_drainage 2.6 % at 2 m/s (estimate 2.5 %). Undriven (a drop or a bubble
-    // relaxing): the flow that surface tension drives, at up to sigma / (2 mu_liquid), (v/c)^2
-    // (within a factor of 2 on the Laplace bubble and the sessile drop, VALIDATION.md).
-    if (!c_.two_phase || !(sc_.options.surface_tension > 0) || !(mu_liquid > 0)) return;
-    if (!(drive_pressure() > 0)) {
-      const double v = sc_.options.surface_tension / (2 * mu_liquid);
-      term("speed", "interface.surface_tension", "capillary flow at sigma / (2 mu_liquid) = " + fixed(v) + " m/s", 0,
-           v * v / (cc * cc), 0);
-    } else {
-      const double v = sc_.options.surface_tension / ((D == 3 ? 8 : 6) * mu_liquid);
+    const double dp = drive_pressure(), mu = liquid_viscosity(), rho = m.props.rest_density;
+    if (!c_.two_phase || !(dp > 0)) return;
+    if (sc_.options.surface_tension > 0 && mu > 0) {
+      const double v = sc_.options.surface_tension / ((D == 3 ? 8 : 6) * mu);
       term("impact", "interface.surface_tension",
            "Haines jumps at sigma / (" + std::string(D == 3 ? "8" : "6") + " mu_liquid) = " + fixed(v) + " m/s stopped at rho c v, v/c",
            0, v / cc, 0, 0, 1);
     }
+    if (c_.after_percolation == 0 || !(rho > 0)) return;
+    const double v = std::sqrt(2 * dp / rho);
+    const std::string keys = std::string(sc_.force_regions.empty() ? "" : "body_force_region") +
+                             (sc_.open_boundary.axis < 0 ? "" : sc_.force_regions.empty() ? "open_boundary" : ", open_boundary");
+    term("impact", keys, "once the gas percolates: its jet at sqrt(2 dp / rho) = " + fixed(v) + " m/s stopped at rho c v, v/c", 0,
+         v / cc, 0.5, 0, 1);
+  }
+
+  // The most viscous liquid's viscosity (a fluid with a positive colour), 0 without one.
+  double liquid_viscosity() const {
+    double mu = 0;
+    for (const auto& mm : sc_.materials)
+      if (mm.props.kind == MaterialKind::Fluid && mm.props.colour > 0) mu = std::max(mu, double(mm.props.viscosity));
+    return mu;
   }
 
   // A region's drive: rho |a| over its extent inside the domain (Pa).
@@ -194,21 +218,6 @@ class Terms {
           dp = std::max({dp, std::fabs(ob.inlet_pressure - m.props.background_pressure),
                          std::fabs(ob.outlet_pressure - m.props.background_pressure)});
     return dp;
-  }
-
-  // Once a driven gas percolates, it runs through the open path at up to sqrt(2 dp / rho) (the drive
-  // turned into speed) and stops against water and grains: an impact, Joukowsky's rho c v, v/c of
-  // the density (not (v/c)^2). Measured on drainage_2d: 22-30 % at c = 1 m/s, 10.9 % at 2 m/s.
-  template <class Add>
-  void impact(int f, double cc, Add& term) const {
-    const double dp = drive_pressure(), rho = sc_.materials[f].props.rest_density;
-    // A run that ends when the gas percolates (time.after_percolation = 0) never sees the jet.
-    if (!c_.two_phase || !(dp > 0) || !(rho > 0) || c_.after_percolation == 0) return;
-    const double v = std::sqrt(2 * dp / rho);
-    const std::string keys = std::string(sc_.force_regions.empty() ? "" : "body_force_region") +
-                             (sc_.open_boundary.axis < 0 ? "" : sc_.force_regions.empty() ? "open_boundary" : ", open_boundary");
-    term("impact", keys, "once the gas percolates: its jet at sqrt(2 dp / rho) = " + fixed(v) + " m/s stopped at rho c v, v/c", 0,
-         v / cc, 0.5, 0, 1);
   }
 
   const Case& c_;

@@ -19,8 +19,8 @@ struct CompressibilityTerm {
   std::string detail; // how it was counted
   double pressure = 0;  // Δp (Pa); 0 for the speed term
   double value = 0;     // its share of Δρ/ρ
-  double drive_power = 0;  // how it scales with the drive (body forces, imposed pressures): 1, 2, or 0 when it does not
-  // How it scales with the sound speed c: as 1/c^2, or, where > 0, as pressure / max(rho c^2, this)
+  double drive_power = 0;  // how it scales with the drive (body forces, imposed pressures): as drive^this (0: it does not)
+  // How it scales with the sound speed c: as 1/c^sound_power, or, where > 0, as pressure / max(rho c^2, this)
   // (the solids' bulk modulus: past it, a faster sound no longer helps).
   double stiffness = 0;
   double sound_power = 2;  // otherwise as 1/c^this: 2 for a pressure or (v/c)^2, 1 for an impact's rho c v

@@ -105,10 +105,15 @@ void PoreGrid::solid_distance() const {
   }
 }
 
-double PoreGrid::periodic_head(int k) const {
-  std::vector<double> area(n_[k], 0.0);
+std::vector<double> PoreGrid::section_cells(int k) const {
+  std::vector<double> cells(n_[k], 0.0);
   for (long i = 0; i < long(cell_.size()); ++i)
-    if (cell_[i] == Fluid) area[cell_of(i)[k]] += 1;
+    if (cell_[i] == Fluid) cells[cell_of(i)[k]] += 1;
+  return cells;
+}
+
+double PoreGrid::periodic_head(int k) const {
+  const std::vector<double> area = section_cells(k);
   double mean_r = 0;
   for (double a : area) {
     if (a == 0) return -1;
@@ -123,10 +128,9 @@ double PoreGrid::periodic_head(int k) const {
 }
 
 double PoreGrid::periodic_permeability(int k) const {
-  std::vector<double> area(n_[k], 0.0);
-  long fluid = 0;
-  for (long i = 0; i < long(cell_.size()); ++i)
-    if (cell_[i] == Fluid) area[cell_of(i)[k]] += 1, ++fluid;
+  const std::vector<double> area = section_cells(k);
+  double fluid = 0;
+  for (double a : area) fluid += a;
   const double cell_area = std::pow(h_, D_ - 1), box = double(cell_.size()) / n_[k] * cell_area;
   double resistance = 0;  // <1 / C> over the sections
   for (double a : area) {
@@ -134,7 +138,7 @@ double PoreGrid::periodic_permeability(int k) const {
     const double A = a * cell_area, C = D_ == 3 ? A * A / (8 * M_PI) : A * A * A / 12;
     resistance += 1 / C / n_[k];
   }
-  const double porosity = double(fluid) / double(cell_.size()), w = widest(k);
+  const double porosity = fluid / double(cell_.size()), w = widest(k);
   return std::min(1 / (box * resistance), porosity * w * w / (D_ == 3 ? 32.0 : 12.0));
 }
 

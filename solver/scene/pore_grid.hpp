@@ -32,6 +32,7 @@ class PoreGrid {
   enum Cell : std::uint8_t { Empty = 0, Fluid = 1, Solid = 2 };
   long index(const std::array<int, 3>& c) const { return c[0] + long(n_[0]) * (c[1] + long(n_[1]) * c[2]); }
   std::array<int, 3> cell_of(long i) const;
+  std::vector<double> section_cells(int k) const;  // fluid cells in each section across axis k
   bool neighbour(std::array<int, 3> c, int axis, int step, std::array<int, 3>& out) const;
   void mark_free_surface(const Scene& sc);
   void solid_distance() const;
