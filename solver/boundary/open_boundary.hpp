@@ -17,16 +17,45 @@
 
 namespace psph {
 
-// rho / rho0 that particle j presents in a density sum: 1, or for a buffer particle the ratio at its
-// buffer's pressure. Buffer particles come through the periodic seam from the outlet at the outlet's
-// spacing; without this the fluid next to the inlet could not reach the inlet's density and pressure
-// (measured in open_channel_2d: the flow fell to 30-60 % of the exact one once rows had recycled).
+// rho_j / rho0_j that particle j presents in a density sum: 1, or for a buffer particle the ratio at
+// its buffer's pressure (BufferMass gives it the mass of the volume it stands for). The number-density
+// form (eq. 40) takes no neighbour's mass, so there the ratio carries that volume, m_j / (rho0_j V).
+// Without any ratio the flow fell to 30-60 % of the exact one in open_channel_2d.
 template <int D>
-PSPH_HD inline Real buffer_density_ratio(const FluidTable<D>& mats, int k, const Vec<D>& x, Real rho0) {
-  const BufferZone z = mats.open.zone(x);
+PSPH_HD inline Real buffer_density_ratio(const FluidTable<D>& mats, const ParticleView<D>& s, int j, bool number) {
+  const int k = s.material[j];
+  const BufferZone z = mats.open.zone(s.x[j]);
   if (z == BufferZone::None || !mats.is_fluid(k)) return Real(1);
-  return density_from_pressure(mats[k], mats.open.pressure(z), rho0) / rho0;
+  const Real ratio = density_from_pressure(mats[k], mats.open.pressure(z), s.rho0[j]) / s.rho0[j];
+  return number ? ratio * s.m[j] / (s.rho0[j] * mats.open.lattice_volume) : ratio;
 }
+
+// Each step, a buffer particle takes the mass of the volume it stands for, m_i = rho0_i V / n_i,
+// n_i = sum_j W_ij V_j (self included) with V_j = V, a lattice particle's volume (m / rho0 as the
+// scene gives it), or m_j / rho_j for interior fluid: a full lattice gives n_i = 1 and m_i the
+// scene's mass. It keeps
+// that mass as it crosses into the interior: the inlet is a mass source at its density, whatever
+// the spacing of what comes round through the seam. (With a fixed mass per particle, buffers that
+// gave the interior the mass its pressure and its sheared arrangement need thinned by 5 %; a thin
+// buffer lowered the pressure beside it, the characteristic correction then drew more fluid in
+// through both faces, and particles crossing the inlet face summed 4.9 % low: open_channel_2d.)
+template <int D>
+struct BufferMass {
+  ParticleView<D> s;
+  FluidTable<D> mats;
+  NeighbourList<D> nb;
+  Kernel<D> kern;
+  PSPH_HD void operator()(int i) const {
+    if (!mats.is_fluid(s.material[i]) || mats.open.zone(s.x[i]) == BufferZone::None) return;
+    const Real vl = mats.open.lattice_volume;
+    Real n = kern.W(Real(0)) * vl;
+    nb.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
+      const bool interior = mats.is_fluid(s.material[j]) && mats.open.zone(s.x[j]) == BufferZone::None;
+      n += kern.W(r) * (interior ? s.m[j] / s.rho[j] : vl);
+    });
+    s.m[i] = s.rho0[i] * vl / n;
+  }
+};
 
 // Sums over the interior band next to each buffer (OpenBoundaryZone::in_band), both buffers in one
 // reduction: [buffer][count, axial velocity, pressure, impedance rho c]. (A weight vanishing at the
@@ -105,8 +134,8 @@ struct SetBufferVelocity {
   }
 };
 
-// Before the density pass: a fluid particle in the inlet buffer (one that came round through the
-// seam) becomes the inlet's material, its volume m / rho0 kept.
+// Before the lists: a fluid particle in the inlet buffer (one that came round through the seam)
+// becomes the inlet's material (its mass follows: BufferMass).
 template <int D>
 struct ConvertInletFluid {
   ParticleView<D> s;
@@ -114,9 +143,7 @@ struct ConvertInletFluid {
   PSPH_HD void operator()(int i) const {
     const int k = s.material[i], to = mats.open.inlet_material;
     if (k == to || !mats.is_fluid(k) || mats.open.zone(s.x[i]) != BufferZone::Inlet) return;
-    const Real rho0 = mats[to].rest_density;
-    s.m[i] *= rho0 / s.rho0[i];
-    s.rho0[i] = rho0;
+    s.rho0[i] = mats[to].rest_density;
     s.material[i] = static_cast<std::uint8_t>(to);
   }
 };

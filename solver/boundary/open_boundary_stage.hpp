@@ -14,7 +14,7 @@ class OpenBoundaryStage {
  public:
   bool active() const { return active_; }
 
-  void setup(StepContext<D, B>& cx, const SceneOpenBoundary& ob, double support_radius) {
+  void setup(StepContext<D, B>& cx, const SceneOpenBoundary& ob, double support_radius, double spacing) {
     active_ = ob.axis >= 0;
     if (!active_) return;
     OpenBoundaryZone<D>& z = cx.mats.open;
@@ -26,11 +26,18 @@ class OpenBoundaryStage {
     z.inlet_material = ob.inlet_material;
     z.face_band = Real(support_radius);
     z.domain_lower = lo;
+    z.lattice_volume = Real(1 / cx.kern.lattice_sum(spacing));
   }
 
+  // Before the lists and the density pass: fluid come round into the inlet becomes the inlet's.
   void convert_inlet(StepContext<D, B>& cx) const {
     const StageScope scope("open boundary");
     if (active_) B::for_each(cx.n(), ConvertInletFluid<D>{cx.view(), cx.mats});
+  }
+  // Before the density pass, with the lists built: each buffer particle's mass (BufferMass).
+  void buffer_mass(StepContext<D, B>& cx) const {
+    const StageScope scope("open boundary");
+    if (active_) B::for_each(cx.n(), BufferMass<D>{cx.view(), cx.mats, cx.list(), cx.kern});
   }
 
   // Each buffer's velocity gets the correction of the outgoing characteristic with its pressure p_b

@@ -25,6 +25,7 @@ struct OpenBoundaryZone {
   int inlet_material = 0;                        // what the inlet injects
   Real face_band = 0;     // width of the interior band next to each buffer: one support radius (m)
   Real domain_lower = 0;  // the domain's lower end along the axis (m)
+  Real lattice_volume = 0;  // a lattice particle's volume m / rho0 = 1 / Kernel::lattice_sum (m^D)
 
   PSPH_HD bool active() const { return axis >= 0; }
   PSPH_HD BufferZone zone(const Vec<D>& x) const {

@@ -42,7 +42,7 @@ class Simulation final : public Engine {
     setup_rigid(sc);
     coupling_.setup(cx_, opt_.solid_coupling);
     fluid_.setup(cx_, opt_, opt_, sc.force_regions);
-    open_.setup(cx_, sc.open_boundary, opt_.support_radius);
+    open_.setup(cx_, sc.open_boundary, opt_.support_radius, opt_.spacing);
     dt_inputs_ = time_step_inputs(cx_.mats.m, cx_.mats.count, opt_.implicit_viscosity, opt_.surface_tension,
                                   opt_.solid_artificial_viscosity, opt_.solid_artificial_viscosity_beta, D);
     ramp(0);
@@ -132,9 +132,11 @@ class Simulation final : public Engine {
       open_.convert_inlet(cx_);
       if (cx_.continuity) {
         rebuild();
+        open_.buffer_mass(cx_);
         fluid_.density(cx_);  // the pressure of the initial density
       } else {
         rebuild(true);
+        open_.buffer_mass(cx_);
         fluid_.wall_rest_density(cx_);  // with every wall's whole neighbourhood
         rebuild();
       }
@@ -154,6 +156,7 @@ class Simulation final : public Engine {
     damage_.update(cx_);   // the degraded stress, before the forces read it
     if (cx_.fluid) {
       open_.convert_inlet(cx_);
+      open_.buffer_mass(cx_);
       fluid_.density(cx_);
       open_.buffer_state(cx_);
     }

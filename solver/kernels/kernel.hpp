@@ -120,6 +120,23 @@ struct Kernel {
   // Deptulski eq. 2.36). The pair passes use it: one division less per pair.
   PSPH_HD PSPH_PAIR Real F(Real r) const { return norm * inv_support * inv_support * df_over_q(type, r * inv_support); }
   PSPH_HD PSPH_PAIR Vec<D> grad(const Vec<D>& rij, Real r) const { return r > Real(0) ? rij * F(r) : Vec<D>::zero(); }
+
+  // sum_j W_ij over a full square (cubic) lattice of the given spacing, self included: the number
+  // density summation gives a particle at rest (1 / spacing^D up to the kernel's discretisation).
+  double lattice_sum(double spacing) const {
+    const int n = static_cast<int>(std::ceil(support / spacing));
+    double sum = 0;
+    int idx[3] = {-n, -n, -n};
+    for (;;) {
+      double r2 = 0;
+      for (int d = 0; d < D; ++d) r2 += (idx[d] * spacing) * (idx[d] * spacing);
+      sum += W(Real(std::sqrt(r2)));
+      int d = 0;
+      while (d < D && ++idx[d] > n) idx[d++] = -n;
+      if (d == D) break;
+    }
+    return sum;
+  }
 };
 
 }  // namespace psph

@@ -13,19 +13,7 @@ namespace {
 
 template <int D>
 double lattice_sum(KernelType type, double support, double spacing) {
-  const Kernel<D> k = Kernel<D>::make(type, Real(support));
-  const int n = static_cast<int>(std::ceil(support / spacing));
-  double sum = 0;
-  int idx[3] = {-n, -n, -n};
-  for (;;) {
-    double r2 = 0;
-    for (int d = 0; d < D; ++d) r2 += (idx[d] * spacing) * (idx[d] * spacing);
-    sum += k.W(Real(std::sqrt(r2)));
-    int d = 0;
-    while (d < D && ++idx[d] > n) idx[d++] = -n;
-    if (d == D) break;
-  }
-  return sum;
+  return Kernel<D>::make(type, Real(support)).lattice_sum(spacing);
 }
 
 }  // namespace
