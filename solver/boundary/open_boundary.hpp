@@ -33,12 +33,12 @@ PSPH_HD inline Real buffer_density_ratio(const FluidTable<D>& mats, const Partic
 // Each step, a buffer particle takes the mass of the volume it stands for, m_i = rho0_i V / n_i,
 // n_i = sum_j W_ij V_j (self included) with V_j = V, a lattice particle's volume (m / rho0 as the
 // scene gives it), or m_j / rho_j for interior fluid: a full lattice gives n_i = 1 and m_i the
-// scene's mass. It keeps
-// that mass as it crosses into the interior: the inlet is a mass source at its density, whatever
-// the spacing of what comes round through the seam. (With a fixed mass per particle, buffers that
-// gave the interior the mass its pressure and its sheared arrangement need thinned by 5 %; a thin
-// buffer lowered the pressure beside it, the characteristic correction then drew more fluid in
-// through both faces, and particles crossing the inlet face summed 4.9 % low: open_channel_2d.)
+// scene's mass. It keeps that mass as it crosses into the interior: the inlet is a mass source at
+// its density, whatever the spacing of what comes round through the seam. (With a fixed mass per
+// particle, buffers that gave the interior the mass its pressure and its sheared arrangement need
+// thinned by 5 %; a thin buffer lowered the pressure beside it, the characteristic correction then
+// drew more fluid in through both faces, and particles crossing the inlet face summed 4.9 % low:
+// open_channel_2d.)
 template <int D>
 struct BufferMass {
   ParticleView<D> s;
