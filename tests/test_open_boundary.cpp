@@ -47,8 +47,9 @@ TEST(OpenBoundary, CaseKeys) {
   expect_refused(channel, "inlet_pressure = 2.8e-3", "inlet_pressure = nan", "open_boundary.inlet_pressure (line 33): expected a finite number");
 }
 
-// At the first evaluation the inlet buffer holds the inlet's fluid (mass scaled by the density
-// ratio, volume kept) at the inlet's pressure, the outlet buffer its own fluid at the outlet's.
+// At the first evaluation the inlet buffer holds the inlet's fluid (a full lattice: the scene's
+// volume per particle at the inlet fluid's density) at the inlet's pressure, the outlet buffer its
+// own fluid at the outlet's.
 TEST(OpenBoundary, BuffersCarryTheirPressureAndTheInletItsFluid) {
   Case c = load_case_text(gas_inlet("2.8e-3"), "gas_inlet.toml");
   build_particles(c);

@@ -29,7 +29,7 @@ class OpenBoundaryStage {
     z.lattice_volume = Real(1 / cx.kern.lattice_sum(spacing));
   }
 
-  // Before the lists and the density pass: fluid come round into the inlet becomes the inlet's.
+  // Before the density pass: fluid come round into the inlet becomes the inlet's.
   void convert_inlet(StepContext<D, B>& cx) const {
     const StageScope scope("open boundary");
     if (active_) B::for_each(cx.n(), ConvertInletFluid<D>{cx.view(), cx.mats});
