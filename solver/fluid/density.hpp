@@ -50,10 +50,10 @@ struct DensitySummationPass {
     const bool open = c.mats.open.active();
     c.nb.for_each(i, [&](int j, const Vec<D>&, Real r) PSPH_PAIR {
       const Real w = c.kern.W(r);
-      const Real ratio = open ? buffer_density_ratio(c.mats, c.s, j) : Real(1);
+      const Real ratio = open ? buffer_density_ratio(c.mats, c.s, i, j, number) : Real(1);
       // A solid neighbour fills its volume with i's rest density (no deficit at the interface,
       // whatever the solid's own density).
-      const Real m_j = number                                  ? (open ? number_form_mass(c.mats, c.s, i, j) : m_i)
+      const Real m_j = number                                  ? m_i
                        : solids && c.mats.is_solid(c.s.material[j]) ? c.s.rho[i] * c.mats.volume_of(c.s, j)
                                                                 : c.s.m[j];
       num += m_j * w * ratio;
