@@ -75,6 +75,17 @@ TEST(Neighbours, SortIsStableAndCellsAreContiguous) {
   EXPECT_EQ(end, (std::vector<int>{1, 3, 3, 6}));
 }
 
+// With ids, a cell's particles come in id order whatever their order before (or which process
+// holds them): the neighbours' visiting order, hence every sum, is a function of the particles.
+TEST(Neighbours, SortBreaksTiesById) {
+  std::vector<int> keys{3, 1, 3, 0, 1, 3};
+  const std::vector<std::int32_t> ids{40, 7, 12, 5, 3, 20};
+  std::vector<int> perm(6), start(4), end(4);
+  CpuBackend::sort_by_cell(keys.data(), 6, 4, perm.data(), start.data(), end.data(), ids.data());
+  EXPECT_EQ(perm, (std::vector<int>{3, 4, 1, 2, 5, 0}));
+  EXPECT_EQ(start, (std::vector<int>{0, 1, 3, 3}));
+}
+
 TEST(Neighbours, ShortPeriodicAxisIsRejected) {
   CellGrid<2> g;
   const Real lo[2] = {0, 0}, hi[2] = {1, Real(0.25)};

@@ -2,6 +2,7 @@
 // OpenMP backend: memory, launching, sorting and reductions on the host, each launch timed into the
 // focused profile (core/pass_profile.hpp). Physics never lives here.
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -10,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/exact_sum.hpp"
 #include "core/pass_profile.hpp"
 
 #if defined(_OPENMP)
@@ -35,6 +37,13 @@ struct CpuBackend {
   static void fill_zero(void* dst, std::size_t bytes) { if (bytes) std::memset(dst, 0, bytes); }
   static void synchronize() {}
 
+  static int thread_index() {
+#if defined(_OPENMP)
+    return omp_get_thread_num();
+#else
+    return 0;
+#endif
+  }
   static int threads() {
 #if defined(_OPENMP)
     return omp_get_max_threads();
@@ -74,27 +83,34 @@ struct CpuBackend {
     for (int i = 0; i < n; ++i) m = std::max(m, f(i));
     return m;
   }
+  // Adds f(i) for every i into acc (one exact accumulator per Real component of T:
+  // core/exact_sum.hpp), so that the sum depends neither on the thread count nor on the order.
+  template <class T, class F>
+  static void accumulate(int n, const F& f, ExactSum* acc) {
+    const HostPassClock clock(pass_name_of<F>());
+    using C = RealComponents<T>;
+    std::vector<ExactSum> part(static_cast<std::size_t>(threads()) * C::count);
+#pragma omp parallel
+    {
+      ExactSum* mine = part.data() + static_cast<std::size_t>(thread_index()) * C::count;
+#pragma omp for schedule(static)
+      for (int i = 0; i < n; ++i) {
+        const T v = f(i);
+        for (int k = 0; k < C::count; ++k) mine[k].add(double(C::get(v, k)));
+      }
+    }
+    for (std::size_t t = 0; t < part.size(); ++t) acc[t % C::count].merge(part[t]);
+  }
   template <class T, class F>
   static T sum_of(int n, const F& f) {
-    // Fixed-order blocked sum, so the result does not depend on the thread count.
-    const HostPassClock clock(pass_name_of<F>());
-    constexpr int block = 4096;
-    const int nb = (n + block - 1) / block;
-    std::vector<T> part(static_cast<std::size_t>(nb), T{});
-#pragma omp parallel for schedule(static)
-    for (int b = 0; b < nb; ++b) {
-      T s = T{};
-      const int end = std::min(n, (b + 1) * block);
-      for (int i = b * block; i < end; ++i) s += f(i);
-      part[static_cast<std::size_t>(b)] = s;
-    }
-    T s = T{};
-    for (T v : part) s += v;
-    return s;
+    return exact_sum_of<T, CpuBackend>(n, f);
   }
 
-  // Stable counting sort of particles by cell key: perm[new] = old; cells get [start, end).
-  static void sort_by_cell(int* keys, int n, int ncells, int* perm, int* cell_start, int* cell_end) {
+  // Counting sort of particles by cell key, ties by id (when ids are given): perm[new] = old; cells
+  // get [start, end). With ids the order within a cell is a function of the particles alone, not
+  // of their order before the sort (nor of which process holds them).
+  static void sort_by_cell(int* keys, int n, int ncells, int* perm, int* cell_start, int* cell_end,
+                           const std::int32_t* ids = nullptr) {
     static const std::string name = "sort_by_cell";
     const HostPassClock clock(name);
     std::fill(cell_end, cell_end + ncells, 0);
@@ -106,6 +122,15 @@ struct CpuBackend {
       cell_end[c] = cell_start[c];
     }
     for (int i = 0; i < n; ++i) perm[cell_end[keys[i]]++] = i;
+    if (!ids) return;
+#pragma omp parallel for schedule(dynamic, 1024)
+    for (int c = 0; c < ncells; ++c)  // cells hold a few particles: insertion sort
+      for (int a = cell_start[c] + 1; a < cell_end[c]; ++a) {
+        const int p = perm[a];
+        int b = a;
+        for (; b > cell_start[c] && ids[perm[b - 1]] > ids[p]; --b) perm[b] = perm[b - 1];
+        perm[b] = p;
+      }
   }
 };
 

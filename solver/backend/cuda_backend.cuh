@@ -2,6 +2,7 @@
 // CUDA backend: explicit device memory (cudaMalloc), kernel launches, CCCL sort and reductions.
 // Only .cu translation units include this header. Physics never lives here.
 #include <cuda_runtime.h>
+#include <cub/block/block_reduce.cuh>
 #include <thrust/device_ptr.h>
 #include <thrust/execution_policy.h>
 #include <thrust/functional.h>
@@ -10,12 +11,15 @@
 #include <thrust/sort.h>
 #include <thrust/transform_reduce.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "core/exact_sum.hpp"
 #include "core/pass_profile.hpp"
 
 namespace psph {
@@ -39,6 +43,45 @@ __global__ inline void cell_ranges_kernel(const int* keys, int n, int* start, in
   const int k = keys[i];
   if (i == 0 || keys[i - 1] != k) start[k] = i;
   if (i == n - 1 || keys[i + 1] != k) end[k] = i + 1;
+}
+
+// The sort key: cell key in the high word, the tie-breaking id in the low one.
+__global__ inline void key_id_kernel(const int* keys, const std::int32_t* ids, int n, unsigned long long* out) {
+  const int i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i < n) out[i] = static_cast<unsigned long long>(keys[i]) << 32 | static_cast<std::uint32_t>(ids ? ids[i] : i);
+}
+__global__ inline void cell_of_key_kernel(const unsigned long long* key_id, int n, int* keys) {
+  const int i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i < n) keys[i] = static_cast<int>(key_id[i] >> 32);
+}
+
+struct BitOr {
+  __device__ long long operator()(long long a, long long b) const { return a | b; }
+};
+
+// Exact sums (core/exact_sum.hpp): each thread accumulates a strided share, each block adds its
+// threads' digits (integers: exact) into one accumulator per component, written to `out`.
+template <class T, class F, int Threads>
+__global__ void accumulate_kernel(int n, F f, std::int64_t* out_words, int* out_special) {
+  using C = RealComponents<T>;
+  ExactSum acc[C::count];
+  for (int i = blockIdx.x * Threads + threadIdx.x; i < n; i += gridDim.x * Threads) {
+    const T v = f(i);
+    for (int k = 0; k < C::count; ++k) acc[k].add(double(C::get(v, k)));
+  }
+  using Words = cub::BlockReduce<long long, Threads>;
+  __shared__ typename Words::TempStorage tmp;
+  for (int k = 0; k < C::count; ++k) {
+    acc[k].carry();
+    for (int w = 0; w < ExactSum::kDigits; ++w) {
+      const long long sum = Words(tmp).Sum(static_cast<long long>(acc[k].words()[w]));
+      __syncthreads();
+      if (threadIdx.x == 0) out_words[(blockIdx.x * C::count + k) * ExactSum::kDigits + w] = sum;
+    }
+    const long long special = Words(tmp).Reduce(static_cast<long long>(acc[k].special()), BitOr{});
+    __syncthreads();
+    if (threadIdx.x == 0) out_special[blockIdx.x * C::count + k] = static_cast<int>(special);
+  }
 }
 
 template <class T, class F>
@@ -153,25 +196,59 @@ struct CudaBackend {
                                     thrust::counting_iterator<int>(n), ApplyIndex<T, F>{f},
                                     std::numeric_limits<T>::lowest(), thrust::maximum<T>());
   }
+  // Adds f(i) for every i into acc, one exact accumulator per Real component of T.
+  template <class T, class F>
+  static void accumulate(int n, const F& f, ExactSum* acc) {
+    if (n <= 0) return;
+    const DevicePassClock clock(pass_name_of<F>());
+    constexpr int threads = 128, count = RealComponents<T>::count;
+    const int blocks = std::min(256, (n + threads - 1) / threads);
+    const std::size_t words = std::size_t(blocks) * count * ExactSum::kDigits;
+    std::int64_t* d_words = static_cast<std::int64_t*>(allocate(words * sizeof(std::int64_t)));
+    int* d_special = static_cast<int*>(allocate(std::size_t(blocks) * count * sizeof(int)));
+    accumulate_kernel<T, F, threads><<<blocks, threads>>>(n, f, d_words, d_special);
+    const cudaError_t launched = cudaGetLastError();
+    std::vector<std::int64_t> h_words(words);
+    std::vector<int> h_special(std::size_t(blocks) * count);
+    if (launched == cudaSuccess) {
+      download(h_words.data(), d_words, words * sizeof(std::int64_t));
+      download(h_special.data(), d_special, h_special.size() * sizeof(int));
+    }
+    release(d_words), release(d_special);
+    PSPH_CUDA(launched);
+    for (int b = 0; b < blocks; ++b)
+      for (int k = 0; k < count; ++k) {
+        ExactSum part;
+        const std::size_t at = (std::size_t(b) * count + k) * ExactSum::kDigits;
+        for (int w = 0; w < ExactSum::kDigits; ++w) part.words()[w] = h_words[at + w];
+        part.special() = h_special[std::size_t(b) * count + k];
+        acc[k].merge(part);
+      }
+  }
   template <class T, class F>
   static T sum_of(int n, const F& f) {
-    const DevicePassClock clock(pass_name_of<F>());
-    return thrust::transform_reduce(thrust::device, thrust::counting_iterator<int>(0),
-                                    thrust::counting_iterator<int>(n), ApplyIndex<T, F>{f}, T{},
-                                    thrust::plus<T>());
+    return exact_sum_of<T, CudaBackend>(n, f);
   }
 
-  // Stable sort by cell key (keys are overwritten with the sorted keys); perm[new] = old.
-  static void sort_by_cell(int* keys, int n, int ncells, int* perm, int* cell_start, int* cell_end) {
+  // Sort by cell key, ties by id (by index without ids); keys are overwritten with the sorted
+  // keys; perm[new] = old.
+  static void sort_by_cell(int* keys, int n, int ncells, int* perm, int* cell_start, int* cell_end,
+                           const std::int32_t* ids = nullptr) {
     static const std::string name = "sort_by_cell";
     const DevicePassClock clock(name);
     fill_zero(cell_start, sizeof(int) * ncells);
     fill_zero(cell_end, sizeof(int) * ncells);
     if (n == 0) return;
-    thrust::device_ptr<int> k(keys), p(perm);
+    const int grid = (n + block - 1) / block;
+    auto* key_id = static_cast<unsigned long long*>(allocate(sizeof(unsigned long long) * n));
+    key_id_kernel<<<grid, block>>>(keys, ids, n, key_id);
+    thrust::device_ptr<unsigned long long> k(key_id);
+    thrust::device_ptr<int> p(perm);
     thrust::sequence(thrust::device, p, p + n);
-    thrust::stable_sort_by_key(thrust::device, k, k + n, p);
-    cell_ranges_kernel<<<(n + block - 1) / block, block>>>(keys, n, cell_start, cell_end);
+    thrust::sort_by_key(thrust::device, k, k + n, p);
+    cell_of_key_kernel<<<grid, block>>>(key_id, n, keys);
+    release(key_id);
+    cell_ranges_kernel<<<grid, block>>>(keys, n, cell_start, cell_end);
     PSPH_CUDA(cudaGetLastError());
   }
 };

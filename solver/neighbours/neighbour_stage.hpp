@@ -1,5 +1,5 @@
 #pragma once
-// The neighbour stage: cell keys, the stable sort by cell that reorders every registered field,
+// The neighbour stage: cell keys, the sort by cell (ties by id) that reorders every registered field,
 // the Verlet lists (neighbours/neighbour_list.hpp) and when they expire. The physics stages read
 // the lists through the step context (stage/step_context.hpp).
 #include <algorithm>
@@ -100,7 +100,7 @@ class NeighbourStage {
                      const ListNeeds& needs, bool every_particle) {
     const int n = s.size();
     B::for_each(n, CellKeyPass<D>{grid, s.x.data(), s.material.data(), mats, keys_.data()});
-    B::sort_by_cell(keys_.data(), n, 2 * grid.total, perm_.data(), bucket_start_.data(), bucket_end_.data());
+    B::sort_by_cell(keys_.data(), n, 2 * grid.total, perm_.data(), bucket_start_.data(), bucket_end_.data(), s.id.data());
     s.permute(perm_.data());
     if (needs.follow_ids) B::for_each(n, IndexOfIdPass<D>{s.view()});
     if (every_particle) {
