@@ -8,7 +8,7 @@
 #      family), then `poresph bench --backend cuda --json --profile` (each pass's share too) on the
 #      3D fluid box at 1e6 particles, SPHERIC test 2 at its published 4,989,696 particles, the whole
 #      claystone drainage cell and the fluid box at 1e7, then, while time is left, the other CUDA benchmarks
-#      one by one.
+#      one by one; where the machine has MPI, a run on 2 processes against one (monitors identical).
 # Header-only dependencies: toml++ (used header-only), CLI11, nlohmann-json, and GoogleTest's
 # sources (the tests' CMake needs it); Thrust/CUB come with CUDA. They are gathered on a Debian 12
 # machine with `scripts/gpu-deps.sh` into build/gpu-deps (ignored by git, ~3 MiB) and carried with
@@ -167,6 +167,23 @@ if ((dry)); then
     failed+=(agreement-cpu)
 fi
 grep -E '^[0-9: ]*[a-z_]+: (passed|FAILED)$' "$out/ctest-gpu.log" | sed 's/^[0-9]*: //' | while read -r line; do log "  $line"; done
+
+# Two processes on the GPU(s) (one each; both on GPU 0 of a one-GPU machine) write exactly the
+# monitors of one, where this machine has MPI (mpirun, and the build found it).
+if command -v mpirun >/dev/null && grep -q '^MPI_C_FOUND:BOOL=TRUE' "$bdir/CMakeCache.txt"; then
+  backend=$( ((dry)) && echo cpu || echo cuda)
+  case2=$tmp/shared.toml
+  sed 's/^end = 0.5/end = 0.05/' "$root/cases/poiseuille_2d.toml" >"$case2"
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+  if phase "2 processes, backend $backend" 90 "$out/shared.log" "$out/shared.log" sh -c \
+       "'$poresph' run '$case2' --backend $backend --quiet --out '$tmp/one' && mpirun -n 2 '$poresph' run '$case2' --backend $backend --quiet --out '$tmp/two' && cmp '$tmp/one/monitors.csv' '$tmp/two/monitors.csv'"; then
+    log "  2 processes: monitors.csv identical to one process's"
+  else
+    failed+=(shared-run)
+  fi
+else
+  log "2 processes: skipped (no mpirun, or the build found no MPI)"
+fi
 
 # The benchmarks: each in its own process, so that a timeout keeps the records before it.
 mkdir -p "$tmp/bench"

@@ -7,6 +7,7 @@
 #include "app/cmd_image.hpp"
 #include "app/commands.hpp"
 #include "app/last_resort.hpp"
+#include "parallel/communicator.hpp"
 
 namespace {
 
@@ -105,6 +106,9 @@ int main(int argc, char** argv) {
   auto* image = psph::add_image_command(app, image_opt);
 
   CLI11_PARSE(app, argc, argv);
+  // A command over several processes (mpirun) speaks through the first one: the others compute
+  // the same and stay silent (a process that fails alone says so on stderr's descriptor directly).
+  if (psph::launched_by_mpi() && psph::world().rank() != 0) std::cout.rdbuf(nullptr), std::cerr.rdbuf(nullptr);
   const auto dispatch = [&]() -> int {
     if (*run) return psph::cmd_run(case_path, ro);
     if (*check) return psph::cmd_check(case_path, ro.sets, json);
@@ -123,7 +127,9 @@ int main(int argc, char** argv) {
     return 1;
   };
   try {
-    return dispatch();
+    const int code = dispatch();
+    psph::finalise_world();  // a run over several processes (mpirun) ends together
+    return code;
   } catch (...) {
     psph::internal_error();
   }

@@ -1,6 +1,7 @@
 #include "app/run_driver.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -33,7 +34,7 @@ int refuse(const std::string& what, int code = 2) {
 }  // namespace
 
 int RunDriver::run() {
-  if (const int code = open()) return code;
+  if (const int code = agreed(open())) return code;
   try {
     plan_outputs();
   } catch (const std::exception& e) {
@@ -82,9 +83,16 @@ int RunDriver::open() {
   } catch (const std::exception& e) {
     return refuse(e.what());
   }
+  if (comm_.parallel() && insitu_->active())
+    return refuse("in-situ pipelines do not run over several processes yet: run without mpirun, or without "
+                  "pipelines and render the extracts afterwards (poresph figures)");
   if (opt_.serve >= 0 && !dashboard_available())
     return refuse("--serve: this poresph was built without the dashboard (cpp-httplib was not found at build time)");
   dir_ = opt_.out.empty() ? default_run_directory(c_.name) : opt_.out;
+  if (!root()) {  // another process of a shared run: the first one writes
+    rd_ = std::make_unique<RunDirectory>();
+    return 0;
+  }
   try {
     rd_ = std::make_unique<RunDirectory>(dir_, c_.source_text);
   } catch (const WriteError& e) {
@@ -97,10 +105,16 @@ int RunDriver::open() {
 
 // A refusal after the run directory was made: nothing has run, so no run directory is left.
 int RunDriver::discard(const std::string& what, int code) {
+  const bool made = rd_ && rd_->writes();
   rd_.reset();
   std::error_code ec;
-  std::filesystem::remove_all(dir_, ec);
+  if (made) std::filesystem::remove_all(dir_, ec);
   return refuse(what, code);
+}
+
+// A run shared out over processes goes on only if every process can: the largest exit code.
+int RunDriver::agreed(int code) {
+  return comm_.parallel() ? int(comm_.max(static_cast<long long>(code))) : code;
 }
 
 // The checkpoint file given, or a run directory's newest intact one (the newer damaged ones are
@@ -142,7 +156,7 @@ void RunDriver::plan_outputs() {
   const std::vector<std::string> have = engine_->field_names();
   for (const auto& f : insitu_->fields())
     if (std::count(fields.begin(), fields.end(), f) == 0 && std::count(have.begin(), have.end(), f)) fields.push_back(f);
-  writer_ = std::make_unique<ParticleWriter>(rd_->extracts(), fields);
+  writer_ = std::make_unique<ParticleWriter>(rd_->writes() ? rd_->extracts() : "", fields);
   const double t_end = c_.end_time, t = engine_->time();
   dt_mon_ = c_.output.monitor_interval > 0 ? c_.output.monitor_interval : t_end / 100;
   // With pipelines: a frame every visualisation.interval (default a fiftieth of the run), and
@@ -161,6 +175,24 @@ int RunDriver::start() {
   base.precision = precision_name(), base.dimension = c_.scene.dimension, base.particles = engine_->particles();
   base.end_time = c_.end_time, base.extracts = extracts_, base.pipelines = insitu_->active();
   base.monitor_interval = dt_mon_, base.extract_interval = dt_ext_, base.visualisation_interval = dt_vis_;
+  if (const int code = agreed(root() ? supervise(base) : 0)) return code;
+  const bool first_outputs = wrote([&] { monitor(); }) && wrote([&] {
+    if (extracts_) writer_->write(*engine_);
+  });
+  if (!first_outputs || !insitu_->active()) return 0;  // a failed write: the loop does not start
+  try {
+    insitu_->start(*engine_, c_, rd_->path(), [&](const std::string& l) { log(l); });
+  } catch (const std::exception& e) {
+    log(std::string("failed: in-situ visualisation: ") + e.what());
+    supervision_->finish(*engine_, "failed", std::string("in-situ visualisation: ") + e.what(), wall_now());
+    return 4;
+  }
+  return 0;
+}
+
+// The status file, the dashboard and its token (the first process of a shared run only): 0 or the
+// exit code of a refusal.
+int RunDriver::supervise(const RunStatus& base) {
   try {
     supervision_ = std::make_unique<RunSupervision>(rd_->path(), base);
     supervision_->report(*engine_, "starting", wall_now(), true);
@@ -176,18 +208,6 @@ int RunDriver::start() {
     // The token goes to the terminal only: log.txt is served to anyone who can reach the port.
     log("dashboard: " + dashboard_->url() + " (to pause, resume or stop: the token in " + rd_->path() + "/token)");
     std::cout << "dashboard with control: " << dashboard_->url() << "?token=" << supervision_->token() << std::endl;
-  }
-  const bool first_outputs = wrote([&] {
-    monitor();
-    if (extracts_) writer_->write(*engine_);
-  });
-  if (!first_outputs || !insitu_->active()) return 0;  // a failed write: the loop does not start
-  try {
-    insitu_->start(*engine_, c_, rd_->path(), [&](const std::string& l) { log(l); });
-  } catch (const std::exception& e) {
-    log(std::string("failed: in-situ visualisation: ") + e.what());
-    supervision_->finish(*engine_, "failed", std::string("in-situ visualisation: ") + e.what(), wall_now());
-    return 4;
   }
   return 0;
 }
@@ -209,10 +229,21 @@ void RunDriver::loop() {
     log(std::string("unstable: ") + e.what());
   } catch (const WriteError& e) {
     write_failed(e.what());
+    stop_every_process();
   } catch (const std::exception& e) {
     status_ = "failed", code_ = 4, diagnostic_ = e.what();
     log(std::string("failed: ") + e.what());
+    stop_every_process();
   }
+}
+
+// A failure of one process of a shared run (its writes, its memory) ends every process, with its
+// message and its number; an instability is found by every process at once and ends normally.
+void RunDriver::stop_every_process() {
+  if (!comm_.parallel()) return;
+  std::fprintf(stderr, "poresph: process %d of %d: %s\n", comm_.rank(), comm_.size(), diagnostic_.c_str());
+  if (supervision_) supervision_->finish(*engine_, status_, diagnostic_, wall_now());
+  comm_.abort(code_);
 }
 
 void RunDriver::outputs_due() {
@@ -264,11 +295,34 @@ void RunDriver::watch_density() {
     << 100 * w.bound << " %, at t = " << w.first.time << " s, step " << w.first.step << w.first.where
     << ": the flow is no longer weakly compressible; raise the sound speed or lower the drive (poresph check estimates both)";
   log("warning: " + m.str());
+  if (!supervision_) return;
   supervision_->warn(m.str());
   supervision_->report(*engine_, "running", wall_now(), true);
 }
 
+// The first process decides (the dashboard, signals) and tells the others, with the output
+// cadence, so that every process of a shared run leaves at the same step.
 bool RunDriver::controls() {
+  const bool leave = root() ? decide() : false;
+  if (!comm_.parallel()) return leave;
+  struct Decision {
+    int leave, code, stopped;
+    double monitor, extract, visualisation;
+  } d{leave, code_, status_ == "stopped", dt_mon_, dt_ext_, dt_vis_};
+  Bytes b(sizeof d);
+  std::memcpy(b.data(), &d, sizeof d);
+  comm_.broadcast(b, 0);
+  std::memcpy(&d, b.data(), sizeof d);
+  if (root()) return leave;
+  const double t = engine_->time();
+  if (d.monitor != dt_mon_) dt_mon_ = d.monitor, mon_.set_interval(dt_mon_, t);
+  if (d.extract != dt_ext_) dt_ext_ = d.extract, ext_.set_interval(dt_ext_, t);
+  if (d.visualisation != dt_vis_) dt_vis_ = d.visualisation, vis_.set_interval(dt_vis_, t);
+  if (d.leave) code_ = d.code, status_ = d.stopped ? "stopped" : "interrupted";
+  return d.leave != 0;
+}
+
+bool RunDriver::decide() {
   take_requests();
   if (paused_ && !stop_) {
     supervision_->report(*engine_, "paused", wall_now(), true);
@@ -338,14 +392,15 @@ void RunDriver::monitor() {
       std::to_string(two_phase_->last().saturation_gas));
   if (c_.after_percolation < 0) return;
   c_.end_time = std::min(c_.end_time, std::max(engine_->time(), two_phase_->percolation_time() + c_.after_percolation));
-  supervision_->set_end_time(c_.end_time);
+  if (supervision_) supervision_->set_end_time(c_.end_time);
   log("the run ends at t = " + std::to_string(c_.end_time) + " s (time.after_percolation)");
 }
 
 void RunDriver::checkpoint() {
   if (engine_->steps() == last_checkpoint_step_) return;
   last_checkpoint_step_ = engine_->steps();
-  log("checkpoint " + rd_->save_checkpoint(*engine_, c_.name, c_.output.checkpoint_keep));
+  const std::string file = rd_->save_checkpoint(*engine_, c_.name, c_.output.checkpoint_keep);
+  log("checkpoint " + file);
 }
 
 // A record or checkpoint that could not be written ends the run (exit 5): its newest checkpoint
@@ -359,10 +414,10 @@ void RunDriver::write_failed(const std::string& what) {
 void RunDriver::finish() {
   // An unstable or failed state is not saved: the last good checkpoint stays.
   const bool cut_short = status_ == "interrupted" || status_ == "stopped";
-  wrote([&] {
-    if (code_ == 0 || code_ == 130) monitor(), checkpoint();
-    if (extracts_ && cut_short) writer_->write(*engine_);
-  });
+  // One write each: a failed one does not skip the others, which every process of a shared run makes.
+  const bool saved = code_ == 0 || code_ == 130;
+  if (saved) wrote([&] { monitor(); }), wrote([&] { checkpoint(); });
+  if (extracts_ && cut_short) wrote([&] { writer_->write(*engine_); });
   if (insitu_->active()) {
     try {
       if (cut_short) insitu_->output(*engine_);  // the state it stopped at, as a last frame
@@ -382,7 +437,7 @@ void RunDriver::finish() {
   j["profile"] = profile_json(engine_->profile(), outputs_, wall);
   for (const std::string& l : profile_lines(engine_->profile(), outputs_, wall, 8)) log(l);
   wrote([&] { rd_->write_summary(j); });
-  wrote([&] { supervision_->finish(*engine_, status_, diagnostic_, wall); });
+  if (supervision_) wrote([&] { supervision_->finish(*engine_, status_, diagnostic_, wall); });
   if (dashboard_) {
     dashboard_->stop();  // after a last look at the run directory: its clients get the final state
     log("dashboard closed; `poresph serve " + rd_->path() + "` shows the finished run");
@@ -409,6 +464,10 @@ nlohmann::json RunDriver::summary(double wall) const {
   nlohmann::json first = nullptr;
   if (w.exceeded())
     first = {{"time", w.first.time}, {"step", w.first.step}, {"value", w.first.value}, {"particle", w.first.where}};
+  const SharingStats sh = engine_->sharing();
+  if (sh.processes > 1)
+    j["processes"] = {{"count", sh.processes}, {"rebalances", sh.rebalances}, {"imbalance", sh.imbalance},
+                      {"halo_particles", sh.halo_particles}};
   j["compressibility"] = to_json(compressibility_);
   j["density_deviation"] = {{"bound", w.bound}, {"max", w.peak}, {"max_time", w.peak_time},
                             {"max_step", w.peak_step}, {"first_exceeded", first}};

@@ -42,6 +42,11 @@ class RunDriver {
   void progress_line();
   void watch_density();  // a warning, once, when the fluid's density passes its bound
   bool controls();      // the dashboard's requests and a pause; true: leave the loop
+  bool decide();        // the same, on the first process of a shared run
+  int supervise(const RunStatus& base);  // status file and dashboard: 0 or an exit code
+  int agreed(int code);                  // the largest of every process's exit codes
+  void stop_every_process();             // a shared run whose process failed alone
+  bool root() const { return comm_.rank() == 0; }
   void take_requests();
   void monitor();
   void checkpoint();
@@ -64,6 +69,7 @@ class RunDriver {
 
   Case& c_;
   const RunOptions& opt_;
+  Communicator& comm_ = world();  // the processes of a shared run (mpirun), or this one
   CompressibilityEstimate compressibility_;
   std::string compressibility_text_;  // as `check` prints it: to stderr past 1 %, and to log.txt
   std::unique_ptr<Engine> engine_;

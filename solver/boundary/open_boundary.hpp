@@ -14,6 +14,7 @@
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
@@ -42,6 +43,8 @@ PSPH_HD inline Real buffer_density_ratio(const FluidTable<D>& mats, const Partic
 // open_channel_2d.)
 template <int D>
 struct BufferMass {
+  static constexpr FieldNames neighbour_reads{"position", "material", "mass", "density"};
+  static constexpr FieldNames writes{"mass"};
   ParticleView<D> s;
   FluidTable<D> mats;
   NeighbourList<D> nb;
@@ -105,6 +108,8 @@ constexpr Real kBufferShift = Real(0.01);
 
 template <int D>
 struct SetBufferVelocity {
+  static constexpr FieldNames neighbour_reads{"position", "material", "velocity", "mass", "density"};
+  static constexpr FieldNames writes{"velocity", "xsph_correction"};
   ParticleView<D> s;
   FluidTable<D> mats;
   NeighbourView<D> cells;
@@ -139,6 +144,8 @@ struct SetBufferVelocity {
 // becomes the inlet's material (its mass follows: BufferMass).
 template <int D>
 struct ConvertInletFluid {
+  static constexpr FieldNames neighbour_reads{};
+  static constexpr FieldNames writes{"rest_density", "material"};
   ParticleView<D> s;
   FluidTable<D> mats;
   PSPH_HD void operator()(int i) const {
@@ -152,6 +159,8 @@ struct ConvertInletFluid {
 // After the density pass: every buffer particle takes its buffer's pressure and the density at it.
 template <int D>
 struct SetBufferState {
+  static constexpr FieldNames neighbour_reads{};
+  static constexpr FieldNames writes{"pressure", "density"};
   ParticleView<D> s;
   FluidTable<D> mats;
   PSPH_HD void operator()(int i) const {

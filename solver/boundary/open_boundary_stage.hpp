@@ -13,10 +13,14 @@ template <int D, class B>
 class OpenBoundaryStage {
  public:
   bool active() const { return active_; }
+  // How far beyond one support radius a buffer particle reads (its mirror point's neighbourhood,
+  // boundary/open_boundary.hpp): a halo of the lists' radius plus this serves it.
+  double reach() const { return active_ ? reach_ : 0; }
 
   void setup(StepContext<D, B>& cx, const SceneOpenBoundary& ob, double support_radius, double spacing) {
     active_ = ob.axis >= 0;
     if (!active_) return;
+    reach_ = ob.thickness + 2 * support_radius;
     OpenBoundaryZone<D>& z = cx.mats.open;
     const Real lo = Real(ob.lower), hi = Real(ob.upper), b = Real(ob.thickness);
     z.axis = ob.axis;
@@ -32,12 +36,12 @@ class OpenBoundaryStage {
   // Before the density pass: fluid come round into the inlet becomes the inlet's.
   void convert_inlet(StepContext<D, B>& cx) const {
     const StageScope scope("open boundary");
-    if (active_) B::for_each(cx.n(), ConvertInletFluid<D>{cx.view(), cx.mats});
+    if (active_) cx.launch(ConvertInletFluid<D>{cx.view(), cx.mats});
   }
   // Before the density pass, with the lists built: each buffer particle's mass (BufferMass).
   void buffer_mass(StepContext<D, B>& cx) const {
     const StageScope scope("open boundary");
-    if (active_) B::for_each(cx.n(), BufferMass<D>{cx.view(), cx.mats, cx.list(), cx.kern});
+    if (active_) cx.launch(BufferMass<D>{cx.view(), cx.mats, cx.list(), cx.kern});
   }
 
   // Each buffer's velocity gets the correction of the outgoing characteristic with its pressure p_b
@@ -59,17 +63,18 @@ class OpenBoundaryStage {
       u_band[b] = q[1] / q[0];
       du[b] = cx.mats.open.inward(z) * (cx.mats.open.pressure(z) - q[2] / q[0]) / (q[3] / q[0]);
     }
-    B::for_each(cx.n(), SetBufferVelocity<D>{v, cx.mats, cx.cells(), cx.list(), cx.kern, {u_band[0], u_band[1]},
+    cx.launch(SetBufferVelocity<D>{v, cx.mats, cx.cells(), cx.list(), cx.kern, {u_band[0], u_band[1]},
                                              {du[0], du[1]}, Real(kBufferShift / dt)});
   }
 
   void buffer_state(StepContext<D, B>& cx) const {
     const StageScope scope("open boundary");
-    if (active_) B::for_each(cx.n(), SetBufferState<D>{cx.view(), cx.mats});
+    if (active_) cx.launch(SetBufferState<D>{cx.view(), cx.mats});
   }
 
  private:
   bool active_ = false;
+  double reach_ = 0;
 };
 
 }  // namespace psph

@@ -5,11 +5,14 @@
 #include "boundary/wall_pressure.hpp"
 #include "core/equation_of_state.hpp"
 #include "boundary/wall_velocity.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
 template <int D>
 struct WallStatePass {
+  static constexpr FieldNames neighbour_reads = kFluidPairReads;
+  static constexpr FieldNames writes{"pressure", "density", "wall_noslip_velocity"};
   PairContext<D> c;  // lists, kernel, particles, materials
   WallNoSlip mode;
   PSPH_HD void operator()(int i) const {

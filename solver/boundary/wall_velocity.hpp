@@ -20,6 +20,7 @@
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
 #include "stage/pass_context.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
@@ -53,6 +54,8 @@ PSPH_HD inline bool presents_own_velocity(const PairContext<D>& c, WallNoSlip mo
 
 template <int D>
 struct WallVelocityPass {
+  static constexpr FieldNames neighbour_reads = kFluidPairReads;
+  static constexpr FieldNames writes{"wall_noslip_velocity"};
   PairContext<D> c;  // lists, kernel, particles, materials
   WallNoSlip mode;
   bool skip_walls;  // walls done by WallStatePass (boundary/wall_state.hpp): solids only

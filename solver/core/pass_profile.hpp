@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <typeinfo>
 #include <utility>
 #include <vector>
@@ -151,9 +152,18 @@ inline std::string readable_pass_name(const char* mangled) {
   if (!last.empty() && last[0] == '{' && parts.size() > 1) return parts[parts.size() - 2] + "::" + last;
   return last;
 }
+// A wrapper names itself after what it wraps (`using named_as = F;`).
+template <class F, class = void>
+struct ProfiledAs {
+  using type = F;
+};
+template <class F>
+struct ProfiledAs<F, std::void_t<typename F::named_as>> {
+  using type = typename ProfiledAs<typename F::named_as>::type;
+};
 template <class F>
 const std::string& pass_name_of() {
-  static const std::string name = readable_pass_name(typeid(F).name());
+  static const std::string name = readable_pass_name(typeid(typename ProfiledAs<F>::type).name());
   return name;
 }
 

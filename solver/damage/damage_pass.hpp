@@ -12,6 +12,7 @@
 #include "damage/rankine_mohr_coulomb.hpp"
 #include "damage/thermodynamic_update.hpp"
 #include "state/particles.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
@@ -28,6 +29,10 @@ struct DamageLaw {
 
 template <int D>
 struct DamageUpdatePass {
+  static constexpr FieldNames neighbour_reads{};
+  static constexpr FieldNames writes{"damage",          "damage_driving_force", "tensile_damage",
+                                     "compressive_damage", "damaged_bulk_modulus", "damaged_shear_modulus",
+                                     "damage_ghost",    "stress"};
   ParticleView<D> s;
   MaterialTable<D> mats;
   DamageLaw law;

@@ -73,7 +73,7 @@ class DamageStage {
   void update(StepContext<D, B>& cx) {
     const StageScope scope("damage");
     if (!active_) return;
-    B::for_each(cx.n(), DamageUpdatePass<D>{cx.view(), cx.mats, law_, damage_.data(), driving_force_.data(),
+    cx.launch(DamageUpdatePass<D>{cx.view(), cx.mats, law_, damage_.data(), driving_force_.data(),
                                             bulk_.size() ? bulk_.data() : nullptr, bulk_.size() ? shear_.data() : nullptr,
                                             tensile_.size() ? tensile_.data() : nullptr,
                                             tensile_.size() ? compressive_.data() : nullptr});
@@ -87,11 +87,11 @@ class DamageStage {
   // Before each list build, and after the forces.
   void retire_ghosts(StepContext<D, B>& cx) const {
     const StageScope scope("damage");
-    if (cx.s.ghost.size()) B::for_each(cx.n(), RetireGhosts<D>{cx.view()});
+    if (cx.s.ghost.size()) cx.launch(RetireGhosts<D>{cx.view()});
   }
   void pin_ghosts(StepContext<D, B>& cx) const {
     const StageScope scope("damage");
-    if (cx.s.ghost.size()) B::for_each(cx.n(), PinGhosts<D>{cx.view()});
+    if (cx.s.ghost.size()) cx.launch(PinGhosts<D>{cx.view()});
   }
 
   void monitors(StepContext<D, B>& cx, std::vector<MonitorValue>& out) const {

@@ -11,12 +11,15 @@
 #include "core/damage_ghost.hpp"
 #include "core/material.hpp"
 #include "state/particles.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
 // Before a list build: the pending ghosts retire.
 template <int D>
 struct RetireGhosts {
+  static constexpr FieldNames neighbour_reads{};
+  static constexpr FieldNames writes{"damage_ghost"};
   ParticleView<D> s;
   PSPH_HD void operator()(int i) const {
     if (s.ghost[i] == kGhostPending) s.ghost[i] = kGhostRetired;
@@ -27,6 +30,8 @@ struct RetireGhosts {
 // acceleration, so that it stays where it dropped out.
 template <int D>
 struct PinGhosts {
+  static constexpr FieldNames neighbour_reads{};
+  static constexpr FieldNames writes{"velocity", "acceleration", "xsph_correction"};
   ParticleView<D> s;
   PSPH_HD void operator()(int i) const {
     if (s.ghost[i] != kGhostRetired) return;

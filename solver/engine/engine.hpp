@@ -10,6 +10,7 @@
 #include "engine/density_watch.hpp"
 #include "rigid/rigid_bodies.hpp"
 #include "engine/scene.hpp"
+#include "parallel/communicator.hpp"
 #include "stage/monitor_value.hpp"
 #include "state/checkpoint.hpp"
 
@@ -21,6 +22,15 @@ struct StepStats {
   double dissipated_energy = 0;  // by the solids' damping since the start (solid/damping.hpp)
   std::string dt_limit;  // which limit set the last step
   int linear_iterations = 0;  // BiCGSTAB iterations of the last implicit viscous step (0 if explicit)
+};
+
+// A run shared out over processes (parallel/): how many, how often the domain was cut anew, the
+// slowest process's step time over the mean at the last list build, and the halo's size.
+struct SharingStats {
+  int processes = 1;
+  int rebalances = 0;
+  double imbalance = 1;
+  long long halo_particles = 0;
 };
 
 class Engine {
@@ -53,6 +63,7 @@ class Engine {
   // Where the steps' and monitors' time went, by pass and stage, since the engine was made
   // (core/pass_profile.hpp).
   virtual PassProfile& profile() = 0;
+  virtual SharingStats sharing() const { return {}; }
   // The rigid bodies' motion (rigid/rigid_bodies.hpp), in the case's order of their geometries.
   virtual std::vector<RigidBodyState> rigid_bodies() const { return {}; }
   // Runs to t_end (exactly).
@@ -61,13 +72,15 @@ class Engine {
   }
 };
 
-std::unique_ptr<Engine> make_cpu_engine(const Scene& scene);
-std::unique_ptr<Engine> make_cuda_engine(const Scene& scene);  // throws when built without CUDA
-bool cuda_available();                                          // built with CUDA and a device present
+// Over the processes of `comm` (parallel/communicator.hpp): by default those that mpirun
+// started, or this one alone.
+std::unique_ptr<Engine> make_cpu_engine(const Scene& scene, Communicator& comm = world());
+std::unique_ptr<Engine> make_cuda_engine(const Scene& scene, Communicator& comm = world());  // throws without CUDA
+bool cuda_available();  // built with CUDA and a device present
 
-inline std::unique_ptr<Engine> make_engine(const Scene& scene, const std::string& backend) {
-  if (backend == "cuda") return make_cuda_engine(scene);
-  return make_cpu_engine(scene);
+inline std::unique_ptr<Engine> make_engine(const Scene& scene, const std::string& backend, Communicator& comm = world()) {
+  if (backend == "cuda") return make_cuda_engine(scene, comm);
+  return make_cpu_engine(scene, comm);
 }
 
 }  // namespace psph

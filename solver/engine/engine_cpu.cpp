@@ -4,6 +4,8 @@
 
 namespace psph {
 
-std::unique_ptr<Engine> make_cpu_engine(const Scene& scene) { return make_simulation<CpuBackend>(scene); }
+std::unique_ptr<Engine> make_cpu_engine(const Scene& scene, Communicator& comm) {
+  return make_simulation<CpuBackend>(scene, comm);
+}
 
 }  // namespace psph

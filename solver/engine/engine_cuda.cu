@@ -9,9 +9,13 @@ bool cuda_available() {
   return cudaGetDeviceCount(&n) == cudaSuccess && n > 0;
 }
 
-std::unique_ptr<Engine> make_cuda_engine(const Scene& scene) {
-  if (!cuda_available()) throw std::runtime_error("--backend cuda: no CUDA device is visible on this machine");
-  return make_simulation<CudaBackend>(scene);
+// Over several processes, one GPU each: a node's processes take its devices in turn.
+std::unique_ptr<Engine> make_cuda_engine(const Scene& scene, Communicator& comm) {
+  int devices = 0;
+  if (cudaGetDeviceCount(&devices) != cudaSuccess || devices == 0)
+    throw std::runtime_error("--backend cuda: no CUDA device is visible on this machine");
+  if (comm.parallel()) PSPH_CUDA(cudaSetDevice(local_rank() % devices));
+  return make_simulation<CudaBackend>(scene, comm);
 }
 
 }  // namespace psph

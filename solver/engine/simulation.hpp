@@ -3,6 +3,8 @@
 // order. Each stage (its folder's *_stage.hpp) owns its options, fields, launches, monitors and
 // checkpoint data; this file only orders them. Compiled by the host compiler for the CPU backend
 // and by nvcc for the CUDA backend.
+#include <chrono>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,10 +27,24 @@
 
 namespace psph {
 
+// Adds the wall time of a scope to `seconds` (a process's time in its steps, which a run shared
+// out over processes balances).
+class BusyClock {
+ public:
+  explicit BusyClock(double& seconds) : seconds_(seconds), t0_(std::chrono::steady_clock::now()) {}
+  ~BusyClock() { seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count(); }
+  BusyClock(const BusyClock&) = delete;
+  BusyClock& operator=(const BusyClock&) = delete;
+
+ private:
+  double& seconds_;
+  std::chrono::steady_clock::time_point t0_;
+};
+
 template <int D, class B>
 class Simulation final : public Engine {
  public:
-  explicit Simulation(const Scene& sc) : opt_(sc.options) {
+  explicit Simulation(const Scene& sc, Communicator& comm = world()) : opt_(sc.options), comm_(comm) {
     watch_.bound = opt_.max_density_deviation;
     if (sc.dimension != D) throw std::logic_error("scene dimension mismatch");
     for (const auto& m : sc.materials) material_names_.push_back(m.name);
@@ -45,12 +61,13 @@ class Simulation final : public Engine {
     open_.setup(cx_, sc.open_boundary, opt_.support_radius, opt_.spacing);
     dt_inputs_ = time_step_inputs(cx_.mats.m, cx_.mats.count, opt_.implicit_viscosity, opt_.surface_tension,
                                   opt_.solid_artificial_viscosity, opt_.solid_artificial_viscosity_beta, D);
+    share_out(sc);
     ramp(0);
     start();
   }
 
   int dimension() const override { return D; }
-  int particles() const override { return cx_.n(); }
+  int particles() const override { return domain_ ? particles_ : cx_.n(); }
   double time() const override { return t_; }
   long steps() const override { return steps_; }
   double last_dt() const override { return dt_; }
@@ -58,11 +75,13 @@ class Simulation final : public Engine {
   std::string device() const override { return B::device_name(); }
   std::vector<RigidBodyState> rigid_bodies() const override { return rigid_.bodies().all(); }
   PassProfile& profile() override { return profile_; }
+  SharingStats sharing() const override { return sharing_; }
   const DensityWatch& density_watch() const override { return watch_; }
 
   // The step: kick, drift, forces at the new positions (eqs. 48, 49).
   void step(double t_stop) override {
     const ProfileRecording recording(profile_);
+    const BusyClock busy(busy_);
     const double dt = next_dt(t_stop);
     ramp(t_ + dt);  // the forces evaluated in this step are those at its end
     open_.buffer_velocity(cx_, dt);
@@ -98,8 +117,9 @@ class Simulation final : public Engine {
     elastic_.prepare_field(cx_, name, steps_);
     std::vector<double> out;
     if (cx_.s.fields().has(name)) {
-      cx_.s.fields().get(name).to_host_double(out);
-      return out;
+      const FieldHandle& f = cx_.s.fields().get(name);
+      f.to_host_double(out);
+      return domain_ ? domain_->gather(out, f.info.components, output_order()) : out;
     }
     const std::vector<Material> materials(cx_.mats.m, cx_.mats.m + cx_.mats.count);
     return compute_derived_field(name, D, materials, [this](const std::string& src) { return field(src); });
@@ -151,7 +171,7 @@ class Simulation final : public Engine {
 
   // Neighbours, density (or the EOS after continuity), forces at the new positions.
   void evaluate() {
-    if (cx_.neighbours.expired(cx_.s, cx_.grid) || damage_.ghosts_pending(cx_)) rebuild();
+    if (cx_.lists_expired() || damage_.ghosts_pending(cx_)) rebuild();
     elastic_.strain(cx_);  // before the fluid's sums, which read the solid's volumes
     damage_.update(cx_);   // the degraded stress, before the forces read it
     if (cx_.fluid) {
@@ -186,18 +206,22 @@ class Simulation final : public Engine {
   // particles are placed.
   void kick(double h) {
     const StageScope scope("integrate");
-    B::for_each(cx_.n(), KickPass<D>{cx_.view(), cx_.mats, Real(h)});
+    cx_.launch(KickPass<D>{cx_.view(), cx_.mats, Real(h)});
     rigid_.kick(cx_, h);
   }
   void drift(double dt) {
     const StageScope scope("integrate");
-    B::for_each(cx_.n(), DriftPass<D>{cx_.view(), cx_.grid, Real(dt), cx_.continuity});
+    cx_.launch(DriftPass<D>{cx_.view(), cx_.grid, Real(dt), cx_.continuity});
     rigid_.drift(cx_, dt);
   }
   // `every_particle`: lists for walls far from the fluid too (the walls' initial density).
+  // A run shared out over processes first moves particles to their owners and gathers the halo
+  // again (parallel/particle_domain.hpp).
   void rebuild(bool every_particle = false) {
     damage_.retire_ghosts(cx_);  // the damage ghosts leave the lists (damage/ghosts.hpp)
+    if (domain_ && planned_) domain_->redistribute(cx_.s, rebalance_costs());
     cx_.neighbours.build(cx_.s, cx_.grid, cx_.mats, cx_.list_needs(), every_particle);
+    if (domain_) plan_halo(), cx_.halo_fresh();
     elastic_.lists_built(cx_);
   }
   void ramp(double t) {
@@ -207,6 +231,15 @@ class Simulation final : public Engine {
   }
 
   void setup_context(const Scene& sc);
+  void share_out(const Scene& sc);
+  void plan_halo();
+  std::vector<double> particle_costs() const;
+  double halo_width() const;
+  void check_clamp_partners();
+  std::vector<double> rebalance_costs();
+  std::vector<long long> output_order() const;
+  std::vector<std::uint8_t> owned_flags() const;
+  std::string from_owner(const std::string& mine);
   void setup_rigid(const Scene& sc);
   double next_dt(double t_stop);
   void check_health();
@@ -215,6 +248,12 @@ class Simulation final : public Engine {
   std::string when() const { return " at t = " + std::to_string(t_) + " s, step " + std::to_string(steps_); }
 
   SolverOptions opt_;
+  Communicator& comm_;
+  std::unique_ptr<ParticleDomain<D, B>> domain_;  // a run shared out over processes only
+  bool planned_ = false;
+  int particles_ = 0;  // of the whole run
+  double busy_ = 0;    // seconds in step() since the last list build
+  SharingStats sharing_;
   StepContext<D, B> cx_;
   InterfaceStage<D, B> interface_;
   ElasticStage<D, B> elastic_;
@@ -240,11 +279,11 @@ class Simulation final : public Engine {
 namespace psph {
 
 template <class B>
-std::unique_ptr<Engine> make_simulation(const Scene& sc) {
+std::unique_ptr<Engine> make_simulation(const Scene& sc, Communicator& comm) {
   switch (sc.dimension) {
-    case 1: return std::make_unique<Simulation<1, B>>(sc);
-    case 2: return std::make_unique<Simulation<2, B>>(sc);
-    case 3: return std::make_unique<Simulation<3, B>>(sc);
+    case 1: return std::make_unique<Simulation<1, B>>(sc, comm);
+    case 2: return std::make_unique<Simulation<2, B>>(sc, comm);
+    case 3: return std::make_unique<Simulation<3, B>>(sc, comm);
   }
   throw std::invalid_argument("dimension must be 1, 2 or 3");
 }

@@ -50,6 +50,112 @@ void Simulation<D, B>::setup_context(const Scene& sc) {
   cx.neighbours.resize(cx.s, n);
 }
 
+// A run over several processes: each keeps the particles of its box and a halo
+// (parallel/particle_domain.hpp). What is not shared out yet is refused before any work.
+template <int D, class B>
+void Simulation<D, B>::share_out(const Scene& sc) {
+  if (!comm_.parallel()) return;
+  if (cx_.elastic && opt_.solid_model == SolidModel::SaintVenantKirchhoff)
+    throw std::invalid_argument("this case's large-strain (Saint Venant-Kirchhoff) solids cannot run over several "
+                                "processes yet: run it on one (without mpirun)");
+  Box box;
+  std::array<bool, 3> periodic{false, false, false};
+  for (int k = 0; k < D; ++k) box.lo[k] = sc.lower[k], box.hi[k] = sc.upper[k], periodic[k] = sc.periodic[k];
+  domain_ = std::make_unique<ParticleDomain<D, B>>(comm_, box, periodic);
+  domain_->split(cx_.s, particle_costs(), halo_width());
+  cx_.domain = domain_.get();
+}
+
+// The halo: every neighbour in the lists of a process's particles, and what the open boundaries'
+// buffers read beyond them.
+// Clamps read their partner (up to two support radii away) and its neighbours.
+template <int D, class B>
+double Simulation<D, B>::halo_width() const {
+  const double clamps = cx_.walls && cx_.elastic ? 2 * opt_.support_radius : 0;
+  return cx_.neighbours.radius() + std::max(open_.reach(), clamps);
+}
+
+// Each particle's share of a step's cost, which the decomposition balances: a fluid particle's
+// neighbour sums against a wall's (its lists only near the fluid).
+template <int D, class B>
+std::vector<double> Simulation<D, B>::particle_costs() const {
+  const std::vector<std::uint8_t> mat = cx_.s.material.host();
+  std::vector<double> cost(mat.size());
+  for (std::size_t i = 0; i < mat.size(); ++i) cost[i] = cx_.mats.is_dynamic(mat[i]) ? 1.0 : 0.25;
+  return cost;
+}
+
+// After a sort: the halo's plan, and the run's particle count.
+template <int D, class B>
+void Simulation<D, B>::plan_halo() {
+  domain_->plan(cx_.s);
+  planned_ = true;
+  particles_ = int(comm_.sum(static_cast<long long>(domain_->owned_count())));
+  sharing_.processes = comm_.size();
+  sharing_.halo_particles = comm_.sum(static_cast<long long>(domain_->halo_count()));
+  if (cx_.elastic && cx_.walls) check_clamp_partners();
+}
+
+// Every clamp partner of a particle this process owns is here (the halo is wide enough for it
+// unless the solid moved by far more than small strain allows): otherwise an error naming it.
+template <int D, class B>
+void Simulation<D, B>::check_clamp_partners() {
+  const std::vector<std::int32_t> mirror = cx_.s.mirror.host(), id = cx_.s.id.host(), index = cx_.s.index_of_id.host();
+  const std::vector<std::uint8_t> own = owned_flags();
+  std::string missing;
+  for (std::size_t i = 0; i < id.size() && missing.empty(); ++i)
+    if (own[i] && mirror[i] >= 0 && index[std::size_t(mirror[i])] < 0)
+      missing = "the clamp partner " + std::to_string(mirror[i]) + " of particle " + std::to_string(id[i]) +
+                " is not within the halo of process " + std::to_string(comm_.rank());
+  const std::string any = from_owner(missing);
+  if (!any.empty()) throw InstabilityError(any + when());
+}
+
+// At a list build: the slowest process's time in the steps since the last build over the mean.
+// Past solver.rebalance_imbalance the domain is cut anew, each particle weighing its class's cost
+// times its process's measured time per unit of cost (the cuts change no number: only the speed).
+template <int D, class B>
+std::vector<double> Simulation<D, B>::rebalance_costs() {
+  constexpr double kMinBusy = 1.0;  // seconds of steps before a verdict
+  const double slowest = comm_.max(busy_);
+  ExactSum total;
+  total.add(busy_);
+  comm_.sum(&total, 1);
+  const double mean = total.value() / comm_.size(), mine = busy_;
+  const bool always = opt_.rebalance_imbalance <= 1;
+  if (!always && !(slowest >= kMinBusy)) return {};
+  sharing_.imbalance = mean > 0 ? slowest / mean : 1;
+  busy_ = 0;
+  if (!always && !(sharing_.imbalance > opt_.rebalance_imbalance)) return {};
+  std::vector<double> cost = particle_costs();
+  const std::vector<std::uint8_t> own = owned_flags();
+  ExactSum weight;
+  for (std::size_t i = 0; i < cost.size(); ++i)
+    if (own[i]) weight.add(cost[i]);
+  const double per_cost = weight.value() > 0 ? mine / weight.value() : 1;
+  for (double& c : cost) c *= per_cost;
+  ++sharing_.rebalances;
+  return cost;
+}
+
+// The order of one process's particles: by cell bucket at the last list build, then by id, as
+// the lists' sort orders them; the outputs of a shared run gather the fields in it.
+template <int D, class B>
+std::vector<long long> Simulation<D, B>::output_order() const {
+  std::vector<double> xb;
+  cx_.s.fields().get(kListPositionsField).to_host_double(xb);
+  const std::vector<std::uint8_t> mat = cx_.s.material.host();
+  const std::vector<std::int32_t> id = cx_.s.id.host();
+  std::vector<long long> order(id.size());
+  for (std::size_t i = 0; i < id.size(); ++i) {
+    Vec<D> x;
+    for (int k = 0; k < D; ++k) x[k] = Real(xb[i * D + k]);
+    const long long bucket = 2LL * cx_.grid.cell_of(x) + (cx_.mats.is_fluid(mat[i]) ? 0 : 1);
+    order[i] = bucket << 32 | static_cast<std::uint32_t>(id[i]);
+  }
+  return order;
+}
+
 template <int D, class B>
 void Simulation<D, B>::setup_rigid(const Scene& sc) {
   double lower[D], length[D];
@@ -92,10 +198,10 @@ double Simulation<D, B>::next_dt(double t_stop) {
 template <int D, class B>
 void Simulation<D, B>::check_health() {
   const StageScope scope("health check");
-  if (cx_.n() == 0) return;  // the reduction of nothing is the lowest Real
   const bool stop = opt_.stop_on_density_deviation && opt_.max_density_deviation > 0;
   const BadParticle<D> check{cx_.view(), cx_.grid, cx_.mats, Real(stop ? opt_.max_density_deviation : 1e30)};
   const double health = cx_.template max_of<Real>(HealthOf<D>{check});
+  if (!(health >= 0)) return;  // no particle at all: the reduction of nothing is the lowest Real
   const int bad = int(health / 16);
   if (bad == 0) return watch_density(health);
   const std::string who = culprit(check, bad);
@@ -127,18 +233,39 @@ void Simulation<D, B>::watch_density(double dev) {
 // a download, on the failure path only).
 template <int D, class B>
 std::string Simulation<D, B>::culprit(const BadParticle<D>& bad, int code) {
-  const int i = cx_.template max_of<int>(BadParticleIndex<D>{bad, code});
-  if (i < 0) return "";
+  const int wanted = cx_.template max_of<int>(BadParticleId<D>{bad, code});
+  if (wanted < 0) return "";
   std::vector<Vec<D>> x, v;
   std::vector<std::uint8_t> mat;
   std::vector<std::int32_t> id;
   cx_.s.x.download(x), cx_.s.v.download(v), cx_.s.material.download(mat), cx_.s.id.download(id);
+  const std::vector<std::uint8_t> own = owned_flags();
   std::ostringstream o;
   o.precision(4);
-  o << " (particle " << id[std::size_t(i)] << ", material " << material_names_.at(mat[std::size_t(i)]) << ", at (";
-  for (int k = 0; k < D; ++k) o << (k ? ", " : "") << x[std::size_t(i)][k];
-  o << ") m, speed " << norm(v[std::size_t(i)]) << " m/s)";
-  return o.str();
+  for (std::size_t i = 0; i < id.size(); ++i) {
+    if (id[i] != wanted || !own[i]) continue;
+    o << " (particle " << id[i] << ", material " << material_names_.at(mat[i]) << ", at (";
+    for (int k = 0; k < D; ++k) o << (k ? ", " : "") << x[i][k];
+    o << ") m, speed " << norm(v[i]) << " m/s)";
+  }
+  return domain_ ? from_owner(o.str()) : o.str();
+}
+
+// Told by the one process that knows it (its owner), to every process.
+template <int D, class B>
+std::string Simulation<D, B>::from_owner(const std::string& mine) {
+  std::string out;
+  for (const Bytes& b : comm_.all_gather(Bytes(mine.begin(), mine.end())))
+    if (!b.empty()) out.assign(b.begin(), b.end());
+  return out;
+}
+
+template <int D, class B>
+std::vector<std::uint8_t> Simulation<D, B>::owned_flags() const {
+  if (!cx_.owned()) return std::vector<std::uint8_t>(std::size_t(cx_.n()), 1);
+  std::vector<std::uint8_t> own(std::size_t(cx_.n()));
+  B::download(own.data(), cx_.owned(), own.size());
+  return own;
 }
 
 template <int D, class B>
@@ -165,9 +292,14 @@ Checkpoint Simulation<D, B>::checkpoint() {
   c.time = t_, c.last_dt = dt_, c.first_dt = dt_first_, c.steps = steps_;
   elastic_.save(c);
   rigid_.save(c);
+  // A run over several processes gathers the fields in one process's particle order: the very
+  // checkpoint of one process, which restarts on any number of them.
+  const std::vector<long long> order = domain_ ? output_order() : std::vector<long long>{};
+  if (domain_) c.particles = particles_;
   for (const auto& f : cx_.s.fields().all()) {
     c.fields.push_back(CheckpointField{f.info.name, f.element_bytes, {}});
     f.to_host_bytes(c.fields.back().bytes);
+    if (domain_) c.fields.back().bytes = domain_->gather(c.fields.back().bytes, f.element_bytes, order);
   }
   return c;
 }
@@ -178,7 +310,7 @@ void Simulation<D, B>::restore(const Checkpoint& c) {
   auto differs = [](const std::string& what, const std::string& ours, const std::string& theirs) {
     throw std::invalid_argument("the checkpoint " + what + " (" + theirs + ") differs from the case's (" + ours + ")");
   };
-  const int n = cx_.n();
+  const int n = particles();
   if (c.dimension != D) differs("dimension", std::to_string(D), std::to_string(c.dimension));
   if (c.particles != n) differs("particle count", std::to_string(n), std::to_string(c.particles));
   if (c.precision != precision_name()) differs("precision", precision_name(), c.precision);
@@ -195,12 +327,18 @@ void Simulation<D, B>::restore(const Checkpoint& c) {
   if (!rigid.empty()) throw std::invalid_argument("the checkpoint " + rigid);
   for (const auto& f : cx_.s.fields().all())
     if (const CheckpointField* cf = c.field(f.info.name)) f.from_host_bytes(cf->bytes);
+  if (domain_) {  // every particle is here: this process keeps its share, cut anew
+    cx_.s.set_count(n);
+    domain_->split(cx_.s, particle_costs(), halo_width());
+    planned_ = false;  // the share is new: the next list build plans its halo
+  }
   rigid_.load(c);
   elastic_.load(c);
   t_ = c.time, dt_ = c.last_dt, dt_first_ = c.first_dt, steps_ = c.steps;
   ramp(t_);
   if (saved_lists) {
     cx_.neighbours.build_as_saved(cx_.s, cx_.grid, cx_.mats, cx_.list_needs());
+    if (domain_) plan_halo(), cx_.halo_fresh();
     elastic_.lists_built(cx_);
   } else {
     rebuild();

@@ -9,11 +9,14 @@
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
 #include "stage/pass_context.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
 template <int D>
 struct ContinuityPass {
+  static constexpr FieldNames neighbour_reads = kFluidPairReads;
+  static constexpr FieldNames writes{"density_rate"};
   PairContext<D> c;  // lists, kernel, particles, materials
   Real density_diffusion;  // delta (0 = off)
   Real smoothing_length;

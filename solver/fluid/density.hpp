@@ -8,12 +8,15 @@
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
 #include "stage/pass_context.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
 // n_i = sum_j W_ij, self included (Pazdniakou eq. 40).
 template <int D>
 struct NumberDensityPass {
+  static constexpr FieldNames neighbour_reads{"position"};
+  static constexpr FieldNames writes{"number_density"};
   NeighbourList<D> nb;
   Kernel<D> kern;
   ParticleView<D> s;
@@ -35,6 +38,8 @@ struct NumberDensityPass {
 // with the density of their buffer's pressure (boundary/open_boundary.hpp).
 template <int D>
 struct DensitySummationPass {
+  static constexpr FieldNames neighbour_reads = kFluidPairReads;
+  static constexpr FieldNames writes{"density", "pressure"};
   PairContext<D> c;  // lists, kernel, particles, materials
   bool normalised;
   bool number;         // eq. 40 form
@@ -68,6 +73,8 @@ struct DensitySummationPass {
 // Pressure from the current density (continuity mode, where density is integrated).
 template <int D>
 struct EquationOfStatePass {
+  static constexpr FieldNames neighbour_reads{};
+  static constexpr FieldNames writes{"pressure"};
   ParticleView<D> s;
   FluidTable<D> mats;
   PSPH_HD void operator()(int i) const {
@@ -79,6 +86,8 @@ struct EquationOfStatePass {
 // The walls' EOS reference: their initial summed density (and the background pressure).
 template <int D>
 struct SetWallRestDensity {
+  static constexpr FieldNames neighbour_reads{};
+  static constexpr FieldNames writes{"rest_density", "pressure"};
   ParticleView<D> s;
   FluidTable<D> mats;
   PSPH_HD void operator()(int i) const {

@@ -65,23 +65,23 @@ class FluidStage {
   void wall_rest_density(StepContext<D, B>& cx) const {
     const StageScope scope("fluid");
     density(cx, true);
-    B::for_each(cx.n(), SetWallRestDensity<D>{cx.view(), cx.mats});
+    cx.launch(SetWallRestDensity<D>{cx.view(), cx.mats});
   }
   // Density by summation, or the pressure of the integrated density.
   void density(StepContext<D, B>& cx, bool all_particles = false) const {
     const StageScope scope("fluid");
-    if (cx.continuity) return B::for_each(cx.n(), EquationOfStatePass<D>{cx.view(), cx.mats});
+    if (cx.continuity) return cx.launch(EquationOfStatePass<D>{cx.view(), cx.mats});
     const bool normalised = o_.density == DensityMethod::NormalisedSummation;
     const bool number = o_.density == DensityMethod::NumberSummation;
-    if (normalised) B::for_each(cx.n(), NumberDensityPass<D>{cx.list(), cx.kern, cx.view(), all_particles});
-    B::for_each(cx.n(), DensitySummationPass<D>{cx.pairs(), normalised, number,
+    if (normalised) cx.launch(NumberDensityPass<D>{cx.list(), cx.kern, cx.view(), all_particles});
+    cx.launch(DensitySummationPass<D>{cx.pairs(), normalised, number,
                                                 all_particles, cx.solids()});
   }
   // d rho/dt with the velocity that drifts the particles (fluid/continuity.hpp).
   void density_rate(StepContext<D, B>& cx) const {
     const StageScope scope("fluid");
     if (!cx.continuity) return;
-    B::for_each(cx.n(), ContinuityPass<D>{cx.pairs(), Real(o_.density_diffusion),
+    cx.launch(ContinuityPass<D>{cx.pairs(), Real(o_.density_diffusion),
                                           Real(cx.smoothing_length), o_.wall_pressure == WallPressure::Summation});
   }
 
@@ -89,13 +89,13 @@ class FluidStage {
   void present_walls(StepContext<D, B>& cx) const {
     const StageScope scope("fluid");
     const bool extrapolated = cx.walls && o_.wall_pressure == WallPressure::Extrapolated;
-    if (extrapolated) B::for_each(cx.n(), WallStatePass<D>{cx.pairs(), o_.wall_noslip});
+    if (extrapolated) cx.launch(WallStatePass<D>{cx.pairs(), o_.wall_noslip});
     if ((cx.walls && !extrapolated) || cx.solids())
-      B::for_each(cx.n(), WallVelocityPass<D>{cx.pairs(), o_.wall_noslip, extrapolated});
+      cx.launch(WallVelocityPass<D>{cx.pairs(), o_.wall_noslip, extrapolated});
   }
   void forces(StepContext<D, B>& cx) const {
     const StageScope scope("fluid");
-    B::for_each(cx.n(), FluidForcePass<D>{cx.pairs(), fo_});
+    cx.launch(FluidForcePass<D>{cx.pairs(), fo_});
   }
 
   // v <- (I - dt L)^-1 v on the fluid (fluid/viscosity.hpp), L at the current positions with the
@@ -109,15 +109,19 @@ class FluidStage {
     const ParticleView<D> v = cx.view();
     for (auto* a : {&visc_b_, &visc_x_}) a->resize(n);
     const bool normalise = o_.laplacian_correction != LaplacianCorrection::None;
-    auto op = [&](const Vec<D>* in, Vec<D>* out, bool walls) {
+    // Over several processes: the operator's input from the owners of the halo, at each product.
+    auto op = [&](Vec<D>* in, Vec<D>* out, bool walls) {
+      cx.refresh_array(in, std::size_t(n), "the implicit viscous solve's vector");
       B::for_each(n, ImplicitViscosityOperator<D>{cx.pairs(), normalise, Real(dt), in, out, walls});
     };
+    cx.template refresh_reads<ImplicitViscosityOperator<D>>();
     visc_x_.zero();
     op(visc_x_.data(), visc_b_.data(), true);  // A(0): the walls' part
     B::for_each(n, FluidDifference<D>{visc_b_.data(), v.v, visc_b_.data(), v, cx.mats});
     B::for_each(n, FluidDifference<D>{visc_x_.data(), v.v, visc_x_.data(), v, cx.mats});  // guess: v
     const KrylovResult r = krylov_.solve(
-        n, [&](const Vec<D>* in, Vec<D>* out) { op(in, out, false); }, visc_b_.data(), visc_x_.data(),
+        n, [&](Vec<D>* in, Vec<D>* out) { op(in, out, false); },
+        [&](const DotOf<D>& dot) { return cx.template sum_of<Real>(dot); }, visc_b_.data(), visc_x_.data(),
         o_.implicit_tolerance, 1000);
     linear_iterations_ = r.iterations;
     if (!r.converged)
@@ -125,6 +129,7 @@ class FluidStage {
                              std::to_string(r.relative_residual) + " after " + std::to_string(r.iterations) +
                              " BiCGSTAB iterations)" + when());
     B::for_each(n, SetFluidVelocity<D>{visc_x_.data(), v, cx.mats});
+    cx.written("velocity");
   }
 
  private:

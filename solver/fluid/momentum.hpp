@@ -10,6 +10,7 @@
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
 #include "stage/pass_context.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
@@ -79,6 +80,8 @@ PSPH_HD PSPH_PAIR inline FluidPairTerms<D> fluid_pair_terms(const FluidParticle<
 
 template <int D>
 struct FluidForcePass {
+  static constexpr FieldNames neighbour_reads = kFluidPairReads;
+  static constexpr FieldNames writes{"acceleration", "xsph_correction", "velocity_laplacian"};
   PairContext<D> c;  // lists, kernel, particles, materials
   FluidForceOptions opt;
 

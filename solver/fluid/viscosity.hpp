@@ -7,6 +7,7 @@
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
 #include "stage/pass_context.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
@@ -25,6 +26,8 @@ PSPH_HD inline Real viscous_pair_coefficient(Real mu_i, Real mu_j, Real V_j, Rea
 // they present zero, which makes the map linear.
 template <int D>
 struct ImplicitViscosityOperator {
+  static constexpr FieldNames neighbour_reads = kFluidPairReads;  // and the input vector (fluid/fluid_stage.hpp)
+  static constexpr FieldNames writes{};
   PairContext<D> c;  // lists, kernel, particles, materials
   bool normalise;  // trace-normalised Laplacian (kernels/laplacian_correction.hpp)
   Real dt;

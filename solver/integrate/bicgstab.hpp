@@ -39,12 +39,14 @@ struct KrylovResult {
 template <int D, class B>
 class BiCGStab {
  public:
-  // Solves A x = b (x holds the initial guess); apply(in, out) computes out = A in.
-  template <class Apply>
-  KrylovResult solve(int n, const Apply& apply, const Vec<D>* b, Vec<D>* x, double tolerance, int max_iterations) {
+  // Solves A x = b (x holds the initial guess); apply(in, out) computes out = A in, sum(f) the
+  // sum of f(i) over the run's particles (a run over several processes: over all of them).
+  template <class Apply, class Sum>
+  KrylovResult solve(int n, const Apply& apply, const Sum& sum, const Vec<D>* b, Vec<D>* x, double tolerance,
+                     int max_iterations) {
     for (auto* a : {&r_, &r0_, &p_, &v_, &s_, &t_}) a->resize(n);
     Vec<D>*r = r_.data(), *r0 = r0_.data(), *p = p_.data(), *v = v_.data(), *s = s_.data(), *t = t_.data();
-    auto dot_ = [&](const Vec<D>* a, const Vec<D>* c) { return double(B::template sum_of<Real>(n, DotOf<D>{a, c})); };
+    auto dot_ = [&](const Vec<D>* a, const Vec<D>* c) { return double(sum(DotOf<D>{a, c})); };
     auto comb = [&](Vec<D>* out, const Vec<D>* a, double ca, const Vec<D>* c, double cc, const Vec<D>* e, double ce) {
       B::for_each(n, Combine<D>{out, a, Real(ca), c, Real(cc), e, Real(ce)});
     };

@@ -8,11 +8,14 @@
 #include "core/material.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "state/particles.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
 template <int D>
 struct KickPass {
+  static constexpr FieldNames neighbour_reads{};
+  static constexpr FieldNames writes{"velocity"};
   ParticleView<D> s;
   MaterialTable<D> mats;
   Real dt;
@@ -25,6 +28,8 @@ struct KickPass {
 // rho += dt d rho/dt.
 template <int D>
 struct DriftPass {
+  static constexpr FieldNames neighbour_reads{};
+  static constexpr FieldNames writes{"position", "density"};
   ParticleView<D> s;
   CellGrid<D> grid;
   Real dt;
@@ -79,12 +84,12 @@ struct HealthOf {
   }
 };
 
-// The index of a particle for which BadParticle returns `code` (-1: none; the failure path only).
+// The id of a particle for which BadParticle returns `code` (-1: none; the failure path only).
 template <int D>
-struct BadParticleIndex {
+struct BadParticleId {
   BadParticle<D> bad;
   int code;
-  PSPH_HD int operator()(int i) const { return bad(i) == code ? i : -1; }
+  PSPH_HD int operator()(int i) const { return bad(i) == code ? int(bad.s.id[i]) : -1; }
 };
 
 template <int D>

@@ -14,6 +14,9 @@ struct StepOptions {
   // stops when `stop_on_density_deviation`.
   double max_density_deviation = 0.03;
   bool stop_on_density_deviation = false;
+  // A run over several processes cuts its domain anew when the slowest process's step time passes
+  // this multiple of the mean (parallel/); 1: at every list build.
+  double rebalance_imbalance = 1.2;
 };
 
 }  // namespace psph

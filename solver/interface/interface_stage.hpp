@@ -31,24 +31,22 @@ class InterfaceStage {
   void curvature(StepContext<D, B>& cx) const {
     const StageScope scope("interface");
     if (!active()) return;
-    const int n = cx.n();
     const PairContext<D> pc = cx.pairs();
     // Geometric wetting extrapolates the walls' colour; without walls, solids keep cos(theta).
     const bool geometric = o_.geometric_wetting && cx.walls;
     if (geometric) {
-      B::for_each(n, ColourPass<D>{pc, WallColour::FluidOnly});
-      B::for_each(n, NormalPass<D>{pc, WallColour::FluidOnly});
+      cx.launch(ColourPass<D>{pc, WallColour::FluidOnly});
+      cx.launch(NormalPass<D>{pc, WallColour::FluidOnly});
       for (int k = 0; k < 2; ++k) {
-        B::for_each(n, WallWettingPass<D>{pc});
-        B::for_each(n, ColourPass<D>{pc, WallColour::NearWallsAgain});
-        B::for_each(n, NormalPass<D>{pc, WallColour::NearWallsAgain});
+        cx.launch(WallWettingPass<D>{pc});
+        cx.launch(ColourPass<D>{pc, WallColour::NearWallsAgain});
+        cx.launch(NormalPass<D>{pc, WallColour::NearWallsAgain});
       }
     } else {
-      B::for_each(n, ColourPass<D>{pc, WallColour::Constant});
-      B::for_each(n, NormalPass<D>{pc, WallColour::Constant});
+      cx.launch(ColourPass<D>{pc, WallColour::Constant});
+      cx.launch(NormalPass<D>{pc, WallColour::Constant});
     }
-    B::for_each(n, CurvaturePass<D>{pc, Real(o_.normal_threshold / cx.smoothing_length),
-                                    geometric});
+    cx.launch(CurvaturePass<D>{pc, Real(o_.normal_threshold / cx.smoothing_length), geometric});
   }
 
  private:

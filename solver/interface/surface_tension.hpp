@@ -21,6 +21,7 @@
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
 #include "stage/pass_context.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
@@ -39,6 +40,8 @@ PSPH_HD inline bool colour_pass_skips(const NeighbourList<D>& nb, WallColour wal
 
 template <int D>
 struct ColourPass {
+  static constexpr FieldNames neighbour_reads = kFluidPairReads;
+  static constexpr FieldNames writes{"colour"};
   PairContext<D> c;  // lists, kernel, particles, materials
   WallColour walls;
   PSPH_HD void operator()(int i) const {
@@ -64,6 +67,8 @@ struct ColourPass {
 
 template <int D>
 struct NormalPass {
+  static constexpr FieldNames neighbour_reads = kFluidPairReads;
+  static constexpr FieldNames writes{"colour_gradient"};
   PairContext<D> c;  // lists, kernel, particles, materials
   WallColour walls;
   PSPH_HD void operator()(int i) const {
@@ -129,6 +134,8 @@ PSPH_HD inline Vec<D> reliable_unit_normal(const Vec<D>& n, Real threshold) {
 
 template <int D>
 struct CurvaturePass {
+  static constexpr FieldNames neighbour_reads = kFluidPairReads;
+  static constexpr FieldNames writes{"curvature"};
   PairContext<D> c;  // lists, kernel, particles, materials
   Real threshold;  // eps / h_s
   bool walls_extend_colour;  // geometric wetting: the colour near walls still measures the distance

@@ -18,11 +18,14 @@
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
 #include "stage/pass_context.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
 template <int D>
 struct WallWettingPass {
+  static constexpr FieldNames neighbour_reads = kFluidPairReads;
+  static constexpr FieldNames writes{"colour", "colour_gradient"};
   PairContext<D> c;  // lists, kernel, particles, materials
   PSPH_HD void operator()(int i) const {
     const int mi = c.s.material[i];

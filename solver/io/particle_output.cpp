@@ -35,6 +35,7 @@ std::string ParticleWriter::write(Engine& e) {
 #if defined(PORESPH_HAVE_VTK)
   const std::vector<std::string> missing = stage_frame(e, fields_, frame_);
   if (!missing.empty()) throw std::runtime_error("output.fields: no particle field '" + missing.front() + "'");
+  if (dir_.empty()) return "";  // another process of a shared run: the fields gathered, nothing written
   ParticlePolyData poly;
   vtkNew<vtkXMLPolyDataWriter> w;
   w->SetFileName((path + ".tmp").c_str());  // renamed when whole: a watcher never reads half a file

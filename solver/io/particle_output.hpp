@@ -13,6 +13,7 @@ bool particle_output_available();
 
 class ParticleWriter {
  public:
+  // An empty directory: another process of a shared run, which gathers the fields and writes nothing.
   ParticleWriter(std::string directory, std::vector<std::string> fields);
   // Writes extracts/particles_NNNNNN.vtp for the engine's current state; returns the file path.
   std::string write(Engine& e);

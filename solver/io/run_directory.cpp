@@ -34,6 +34,7 @@ RunDirectory::RunDirectory(const std::string& path, const std::string& resolved)
 }
 
 void RunDirectory::log(const std::string& line) {
+  if (!writes()) return;
   std::cout << line << std::endl;
   log_ << line << '\n';
   log_.flush();
@@ -41,6 +42,7 @@ void RunDirectory::log(const std::string& line) {
 }
 
 void RunDirectory::monitor(Engine& e, const std::vector<MonitorValue>& extra) {
+  if (!writes()) return void(e.stats());
   if (!header_written_) {
     monitors_ << "step,time,dt,dt_limit,kinetic_energy,v_max,a_max,density_deviation_max";
     for (const auto& m : extra) monitors_ << ',' << m.name, extra_columns_.push_back(m.name);
@@ -61,6 +63,7 @@ void RunDirectory::monitor(Engine& e, const std::vector<MonitorValue>& extra) {
 }
 
 void RunDirectory::write_summary(const nlohmann::json& j) const {
+  if (!writes()) return;
   write_file_durably(path_ + "/summary.json", j.dump(2) + "\n");
 }
 
@@ -68,7 +71,9 @@ std::string RunDirectory::save_checkpoint(Engine& e, const std::string& case_nam
   char name[40];
   std::snprintf(name, sizeof name, "/step_%010ld.ckpt", e.steps());
   const std::string file = path_ + "/checkpoints" + name;
-  write_checkpoint_file(file, e.checkpoint(), case_name);
+  const Checkpoint c = e.checkpoint();
+  if (!writes()) return "";
+  write_checkpoint_file(file, c, case_name);
   std::set<std::string> all;  // zero-padded names sort by step
   std::error_code ec;
   for (const auto& f : fs::directory_iterator(path_ + "/checkpoints", ec))

@@ -15,6 +15,10 @@ class RunDirectory {
  public:
   // Creates the directory (it must not exist or be empty) and writes the resolved case.
   RunDirectory(const std::string& path, const std::string& resolved_case_toml);
+  // The other processes of a run shared out over several (the first one writes): the engine's
+  // collective calls (statistics, checkpoint) are made, nothing is written.
+  RunDirectory() = default;
+  bool writes() const { return !path_.empty(); }
   const std::string& path() const { return path_; }
   std::string extracts() const { return path_ + "/extracts"; }
 

@@ -9,33 +9,23 @@
 
 namespace psph {
 
-// near[c] = 1 when a cell of c's stencil holds a fluid particle (computed per cell: far fewer
-// cells than particles).
-template <int D>
-struct CellNearFluid {
-  NeighbourView<D> nb;
-  std::uint8_t* cell_near;
-  PSPH_HD void operator()(int c) const {
-    Vec<D> centre;
-    int rem = c;
-    for (int k = 0; k < D; ++k) {
-      centre[k] = nb.grid.lower[k] + (Real(rem % nb.grid.ncell[k]) + Real(0.5)) / nb.grid.inv_cell[k];
-      rem /= nb.grid.ncell[k];
-    }
-    std::uint8_t f = 0;
-    nb.for_each_cell(centre, [&](int key) { f |= nb.cell_has_fluid(key) ? 1 : 0; });
-    cell_near[c] = f;
-  }
-};
-
-// near[i] = near flag of i's cell.
+// near[i] = 1 when a fluid particle lies within the list radius of i: a function of i's own
+// neighbourhood, hence the same whichever process holds i and whatever lies beyond its halo (a flag
+// per cell would look two cells away). A wall farther than the list radius from every fluid
+// particle cannot come within the support before the lists expire.
 template <int D>
 struct NearFluid {
-  CellGrid<D> grid;
-  const Vec<D>* x;
-  const std::uint8_t* cell_near;
+  NeighbourView<D> nb;
   std::uint8_t* near;
-  PSPH_HD void operator()(int i) const { near[i] = cell_near[grid.cell_of(x[i])]; }
+  PSPH_HD void operator()(int i) const {
+    const Vec<D> xi = nb.x[i];
+    bool found = false;
+    nb.for_each_cell_in_reach(xi, [&](int key) {
+      for (int j = nb.bucket_start[2 * key]; !found && j < nb.bucket_end[2 * key]; ++j)
+        found = norm2(nb.grid.separation(xi, nb.x[j])) < nb.support2;
+    });
+    near[i] = found ? 1 : 0;
+  }
 };
 
 }  // namespace psph

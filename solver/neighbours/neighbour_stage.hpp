@@ -44,7 +44,7 @@ class NeighbourStage {
     CellGrid<D> grid{};
     if (!CellGrid<D>::make(lo, hi, per, Real(radius_), grid))
       throw std::invalid_argument("a periodic axis is shorter than 3 support radii");
-    bucket_start_.resize(2 * grid.total), bucket_end_.resize(2 * grid.total), cell_near_.resize(grid.total);
+    bucket_start_.resize(2 * grid.total), bucket_end_.resize(2 * grid.total);
     return grid;
   }
 
@@ -87,28 +87,31 @@ class NeighbourStage {
     s.x.swap(x_build_);
   }
 
-  // The lists hold every pair within R as long as no particle moved by half the skin.
-  bool expired(const ParticleState<D, B>& s, const CellGrid<D>& grid) const {
-    const StageScope scope("neighbours");
-    const double half_skin = 0.5 * (radius_ - support_);
-    if (half_skin <= 0) return true;
-    return B::template max_of<Real>(s.size(), DisplacementSinceBuild<D>{grid, s.x.data(), x_build_.data()}) >= half_skin;
+  // The lists hold every pair within R as long as no particle moved by half the skin: they have
+  // expired when the largest `displacement` (a reduction over the run) reaches half_skin().
+  double half_skin() const { return 0.5 * (radius_ - support_); }
+  DisplacementSinceBuild<D> displacement(const ParticleState<D, B>& s, const CellGrid<D>& grid) const {
+    return DisplacementSinceBuild<D>{grid, s.x.data(), x_build_.data()};
   }
+  double radius() const { return radius_; }
 
  private:
   void sort_and_list(ParticleState<D, B>& s, const CellGrid<D>& grid, const MaterialTable<D>& mats,
                      const ListNeeds& needs, bool every_particle) {
     const int n = s.size();
+    if (keys_.size() != std::size_t(n))  // a process's share of a run changed (parallel/)
+      keys_.resize(n), perm_.resize(n), count_.resize(n), fluid_count_.resize(n);
     B::for_each(n, CellKeyPass<D>{grid, s.x.data(), s.material.data(), mats, keys_.data()});
     B::sort_by_cell(keys_.data(), n, 2 * grid.total, perm_.data(), bucket_start_.data(), bucket_end_.data(), s.id.data());
     s.permute(perm_.data());
-    if (needs.follow_ids) B::for_each(n, IndexOfIdPass<D>{s.view()});
-    if (every_particle) {
-      s.near_fluid.upload(std::vector<std::uint8_t>(n, 1));
-    } else if (needs.walls && needs.fluid) {  // without fluids every wall lists all its neighbours
-      B::for_each(grid.total, CellNearFluid<D>{cells(grid, s.x.data()), cell_near_.data()});
-      B::for_each(n, NearFluid<D>{grid, s.x.data(), cell_near_.data(), s.near_fluid.data()});
+    if (needs.follow_ids) {
+      B::for_each(static_cast<int>(s.index_of_id.size()), ClearIndexOfId{s.index_of_id.data()});
+      B::for_each(n, IndexOfIdPass<D>{s.view()});
     }
+    if (!every_particle && needs.walls && needs.fluid)
+      B::for_each(n, NearFluid<D>{cells(grid, s.x.data()), s.near_fluid.data()});
+    else  // without fluids every wall lists all its neighbours
+      s.near_fluid.upload(std::vector<std::uint8_t>(n, 1));
     build_lists(s, grid, mats, needs);
   }
 
@@ -133,7 +136,6 @@ class NeighbourStage {
   double support_ = 0, radius_ = 0;
   int capacity_ = 32;
   DeviceArray<int, B> keys_, perm_, bucket_start_, bucket_end_;
-  DeviceArray<std::uint8_t, B> cell_near_;
   DeviceArray<int, B> index_, count_, fluid_count_;
   DeviceArray<Vec<D>, B> x_build_;  // positions at the last list build
 };

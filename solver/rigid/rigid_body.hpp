@@ -10,6 +10,7 @@
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
@@ -46,6 +47,7 @@ struct RigidPlacePass {
   const RigidPose<D>* pose;
   PSPH_HD void operator()(int k) const {
     const int i = s.index_of_id[ids[k]];
+    if (i < 0) return;  // held by another process
     const RigidPose<D>& p = pose[body_of[k]];
     const Vec<D> arm = p.rotation * offset[k];
     s.x[i] = grid.wrap(p.centre + arm);
@@ -68,8 +70,10 @@ struct RigidLoadOf {
   const std::int32_t* ids;  // the body's entries
   const Vec<D>* offset;
   Mat<D> rotation;
+  const std::uint8_t* owned;  // this process's particles (null: all): each member counts once
   PSPH_HD RigidLoadSum operator()(int k) const {
     const int i = s.index_of_id[ids[k]];
+    if (i < 0 || (owned && !owned[i])) return RigidLoadSum{};
     const Vec<D> f = s.a[i] * s.m[i];
     const Vec<D> r = rotation * offset[k];
     RigidLoadSum l;
@@ -92,6 +96,8 @@ struct RigidLoadOf {
 // the fluid's reaction, solid/fluid_coupling.hpp) and adds to an elastic particle's.
 template <int D>
 struct RigidContactPass {
+  static constexpr FieldNames neighbour_reads{"position", "material", "rigid_body", "mass"};
+  static constexpr FieldNames writes{"acceleration"};
   NeighbourList<D> nb;
   ParticleView<D> s;
   MaterialTable<D> mats;

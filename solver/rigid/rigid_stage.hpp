@@ -65,7 +65,7 @@ class RigidStage {
 
   void contact(StepContext<D, B>& cx) const {
     const StageScope scope("rigid");
-    if (active()) B::for_each(cx.n(), RigidContactPass<D>{cx.list(), cx.view(), cx.mats, Real(cx.spacing)});
+    if (active()) cx.launch(RigidContactPass<D>{cx.list(), cx.view(), cx.mats, Real(cx.spacing)});
   }
 
   // Each body's force and torque from its particles' accelerations (eqs. 63, 65).
@@ -78,7 +78,7 @@ class RigidStage {
       for (int k = 0; k < D; ++k)
         for (int l = 0; l < D; ++l) R.a[k][l] = Real(bodies_.body(b).rotation[3 * k + l]);
       const RigidLoadSum sum = cx.template sum_over<RigidLoadSum>(
-          begin_[b + 1] - begin_[b], RigidLoadOf<D>{cx.view(), ids_.data() + begin_[b], offset_.data() + begin_[b], R});
+          begin_[b + 1] - begin_[b], RigidLoadOf<D>{cx.view(), ids_.data() + begin_[b], offset_.data() + begin_[b], R, cx.owned()});
       for (int k = 0; k < 3; ++k) load_[b].force[k] = double(sum.f[k]), load_[b].torque[k] = double(sum.t[k]);
     }
   }
@@ -130,8 +130,10 @@ class RigidStage {
       for (int k = 0; k < 3; ++k) p.omega[k] = Real(w[k]);
     }
     pose_.upload(pose);
+    // Every process places the members it holds, halo copies too, from the same motion.
     B::for_each(static_cast<int>(ids_.size()),
                 RigidPlacePass<D>{cx.view(), cx.grid, ids_.data(), body_of_.data(), offset_.data(), pose_.data()});
+    cx.written("position"), cx.written("velocity");
   }
 
   RigidBodies bodies_;

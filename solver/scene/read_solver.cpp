@@ -57,6 +57,8 @@ void read_solver(CaseReader& top, CaseDraft& d) {
   o.fixed_dt = r.non_negative("dt", 0.0);
   o.neighbour_skin = r.non_negative("neighbour_skin", 0.1);
   if (o.neighbour_skin > 1) r.fail("neighbour_skin", "expected a fraction of the support radius in [0, 1]");
+  o.rebalance_imbalance = r.positive("rebalance_imbalance", 1.2);
+  if (o.rebalance_imbalance < 1) r.fail("rebalance_imbalance", "expected a ratio of step times >= 1 (1: at every list build)");
   o.max_density_deviation = r.non_negative("max_density_deviation", 0.03);
   o.stop_on_density_deviation = r.choice("on_density_deviation", {"warn", "stop"}, "warn") == "stop";
   if (o.stop_on_density_deviation && !(o.max_density_deviation > 0))

@@ -14,11 +14,14 @@
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
 template <int D, class NB = NeighbourList<D>>
 struct SolidViscosityPass {
+  static constexpr FieldNames neighbour_reads = kSolidPairReads;
+  static constexpr FieldNames writes{"acceleration", "xsph_correction"};
   NB nb;  // the solid's pairs
   CellGrid<D> grid;
   Kernel<D> kern;

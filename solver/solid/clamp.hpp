@@ -17,6 +17,7 @@
 #include "neighbours/neighbour_list.hpp"
 #include "solid/strain.hpp"
 #include "state/particles.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
@@ -30,11 +31,14 @@ PSPH_HD inline Vec<D> clamp_normal(const ParticleView<D>& s, int w, int p) {
 
 template <int D>
 struct ClampDisplacementPass {
+  static constexpr FieldNames neighbour_reads = kSolidPairReads;
+  static constexpr FieldNames writes{"displacement"};
   ParticleView<D> s;
   MaterialTable<D> mats;
   PSPH_HD void operator()(int i) const {
     if (mats.is_dynamic(s.material[i]) || s.mirror[i] < 0) return;
     const int p = s.index_of_id[s.mirror[i]];
+    if (p < 0) return;  // a halo copy whose partner another process holds (parallel/): not read
     if (is_retired_ghost(s.ghost, p)) return;  // a damage ghost's wall clamps nothing (damage/ghosts.hpp)
     if (!mats[s.material[i]].slip_clamp) {
       s.u[i] = s.u[i] * Real(2) - s.u[p];

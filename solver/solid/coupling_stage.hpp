@@ -26,13 +26,15 @@ class CouplingStage {
   // `moduli`: the damaged moduli, if any (damage/damage_stage.hpp).
   void present_solids(StepContext<D, B>& cx, ParticleModuli moduli) const {
     const StageScope scope("coupling");
-    if (active_) B::for_each(cx.n(), SolidInterfacePressurePass<D>{cx.pairs(), mode_, moduli});
+    if (active_) cx.launch(SolidInterfacePressurePass<D>{cx.pairs(), mode_, moduli});
   }
   // `fo`: the fluid's force options (the reaction is the fluid's pair force, computed again).
   void fluid_on_solids(StepContext<D, B>& cx, const FluidForceOptions& fo) const {
     const StageScope scope("coupling");
-    if (active_)
-      B::for_each(cx.n(), FluidOnSolidPass<D>{cx.pairs(), fo, mode_ != SolidCoupling::Traction});
+    if (!active_) return;
+    // The fluid's Laplacian correction of its own force pass, read of fluid neighbours.
+    cx.refresh_array(cx.s.visc_scale.data(), cx.s.visc_scale.size(), "visc_scale");
+    cx.launch(FluidOnSolidPass<D>{cx.pairs(), fo, mode_ != SolidCoupling::Traction});
   }
 
  private:

@@ -23,6 +23,7 @@
 #include "neighbours/neighbour_list.hpp"
 #include "state/particles.hpp"
 #include "stage/pass_context.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
@@ -41,6 +42,8 @@ PSPH_HD inline Real harmonic_mean(Real a, Real b) { return a + b > Real(0) ? Rea
 // u = x - x0, minimum image on periodic axes; stored for output and the elastic energy.
 template <int D>
 struct DisplacementPass {
+  static constexpr FieldNames neighbour_reads{};
+  static constexpr FieldNames writes{"displacement"};
   ParticleView<D> s;
   CellGrid<D> grid;
   PSPH_HD void operator()(int i) const { s.u[i] = grid.separation(s.x[i], s.x0[i]); }
@@ -61,6 +64,8 @@ struct ParticleModuli {
 
 template <int D>
 struct ElasticForcePass {
+  static constexpr FieldNames neighbour_reads = kSolidPairReads;
+  static constexpr FieldNames writes{"acceleration"};
   PairContext<D> c;  // lists, kernel, particles, materials
   Real damping = 0;  // zeta (1/s): a -= zeta v
   ParticleModuli moduli;
@@ -93,6 +98,8 @@ struct ElasticForcePass {
 // damping and fluid forces).
 template <int D>
 struct ElasticEnergyOf {
+  static constexpr FieldNames neighbour_reads{"position", "reference_position", "material", "displacement", "mass",
+                                              "rest_density", "damaged_bulk_modulus", "damaged_shear_modulus"};
   ElasticForcePass<D> pass;
   PSPH_HD Real operator()(int i) const {
     if (!pass.c.mats.is_elastic(pass.c.s.material[i])) return Real(0);

@@ -68,7 +68,7 @@ class ElasticStage {
     const StageScope scope("solid");
     if (!active_) return;
     corrections_kept_ = !large_strain();
-    if (corrections_kept_) B::for_each(cx.n(), SolidCorrectionPass<D>{cx.pairs(cx.reference_list())});
+    if (corrections_kept_) cx.launch(SolidCorrectionPass<D>{cx.pairs(cx.reference_list())}), refresh_corrections(cx);
     if (!large_strain()) return;
     const int n = cx.n();
     if (reference_count_.size() == 0) {
@@ -87,11 +87,11 @@ class ElasticStage {
   void strain(StepContext<D, B>& cx) const {
     const StageScope scope("solid");
     if (!active_) return;
-    B::for_each(cx.n(), DisplacementPass<D>{cx.view(), cx.grid});
-    if (cx.walls) B::for_each(cx.n(), ClampDisplacementPass<D>{cx.view(), cx.mats});
+    cx.launch(DisplacementPass<D>{cx.view(), cx.grid});
+    if (cx.walls) cx.launch(ClampDisplacementPass<D>{cx.view(), cx.mats});
     if (stress_form() || cx.fluid || strain_each_step_)
       with_solid_neighbours(cx, [&](auto nb) {
-        B::for_each(cx.n(), StrainStressPass<D, decltype(nb)>{cx.pairs(nb), corrections_kept_});
+        cx.launch(StrainStressPass<D, decltype(nb)>{cx.pairs(nb), corrections_kept_});
       });
   }
 
@@ -101,13 +101,20 @@ class ElasticStage {
     if (!active_) return;
     const Real zeta = Real(o_.solid_damping_rate);
     const bool traction = cx.fluid && o_.solid_coupling == SolidCoupling::Traction;
-    if (traction) B::for_each(cx.n(), AmbientPressurePass<D>{cx.pairs(), Real(o_.solid_reference_pressure)});
+    if (traction) {
+      cx.refresh_array(cx.s.fluid_contact.data(), cx.s.fluid_contact.size(), "fluid_contact");
+      cx.launch(AmbientPressurePass<D>{cx.pairs(), Real(o_.solid_reference_pressure)});
+    }
+    // What the force passes read of neighbours beyond the registered fields (parallel/).
+    if (!corrections_kept_) refresh_corrections(cx);
+    cx.refresh_array(cx.s.piola.data(), cx.s.piola.size(), "piola");
+    cx.refresh_array(cx.s.grad_u.data(), cx.s.grad_u.size(), "grad_u");
     with_solid_neighbours(cx, [&](auto nb) {
       using NB = decltype(nb);
-      if (stress_form()) B::for_each(cx.n(), StressForcePass<D, NB>{cx.pairs(nb), zeta, traction, Real(o_.solid_hourglass)});
-      else B::for_each(cx.n(), ElasticForcePass<D>{cx.pairs(cx.reference_list()), zeta, moduli});
+      if (stress_form()) cx.launch(StressForcePass<D, NB>{cx.pairs(nb), zeta, traction, Real(o_.solid_hourglass)});
+      else cx.launch(ElasticForcePass<D>{cx.pairs(cx.reference_list()), zeta, moduli});
       if (o_.solid_artificial_viscosity > 0 || o_.solid_artificial_viscosity_beta > 0 || o_.solid_xsph > 0)
-        B::for_each(cx.n(), SolidViscosityPass<D, NB>{nb, cx.grid, cx.kern, cx.view(), cx.mats,
+        cx.launch(SolidViscosityPass<D, NB>{nb, cx.grid, cx.kern, cx.view(), cx.mats,
                                                       Real(o_.solid_artificial_viscosity),
                                                       Real(o_.solid_artificial_viscosity_beta), Real(o_.solid_xsph),
                                                       Real(cx.smoothing_length)});
@@ -142,7 +149,7 @@ class ElasticStage {
   void prepare_field(StepContext<D, B>& cx, const std::string& name, long step) {
     const StageScope scope("solid");
     if (!active_ || stress_form() || strain_each_step_ || (name != "strain" && name != "stress") || strain_step_ == step) return;
-    B::for_each(cx.n(), StrainStressPass<D>{cx.pairs(cx.reference_list()), corrections_kept_});
+    cx.launch(StrainStressPass<D>{cx.pairs(cx.reference_list()), corrections_kept_});
     strain_step_ = step;
   }
 
@@ -154,6 +161,14 @@ class ElasticStage {
 
  private:
   bool stress_form() const { return o_.solid_formulation == SolidFormulation::Stress; }
+  // The strain pass's gradient corrections of a run over several processes: the halo's from their
+  // owners (a halo copy's own sums miss neighbours).
+  void refresh_corrections(StepContext<D, B>& cx) const {
+    ParticleState<D, B>& s = cx.s;
+    cx.refresh_array(s.shepard.data(), s.shepard.size(), "shepard");
+    cx.refresh_array(s.shepard_grad.data(), s.shepard_grad.size(), "shepard_grad");
+    cx.refresh_array(s.kcorr.data(), s.kcorr.size(), "kcorr");
+  }
   bool large_strain() const { return o_.solid_model == SolidModel::SaintVenantKirchhoff; }
   // Calls f with the solid's neighbours in the reference configuration: the fixed lists of t = 0
   // in large strain; in small strain the current lists with the reference positions (pairs closer

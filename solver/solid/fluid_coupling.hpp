@@ -29,11 +29,14 @@
 #include "solid/solid_options.hpp"
 #include "solid/strain.hpp"
 #include "stage/pass_context.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
 template <int D>
 struct SolidInterfacePressurePass {
+  static constexpr FieldNames neighbour_reads = kFluidPairReads;
+  static constexpr FieldNames writes{"pressure"};
   PairContext<D> c;  // lists, kernel, particles, materials
   SolidCoupling mode;
   ParticleModuli moduli;  // the damaged moduli, if any
@@ -54,6 +57,8 @@ struct SolidInterfacePressurePass {
 // particles without loading the solid.
 template <int D>
 struct AmbientPressurePass {
+  static constexpr FieldNames neighbour_reads = kFluidPairReads;
+  static constexpr FieldNames writes{};
   PairContext<D> c;  // lists, kernel, particles, materials
   Real reference = 0;  // p_ref (Pa)
   PSPH_HD void operator()(int i) const {
@@ -75,6 +80,8 @@ struct AmbientPressurePass {
 // body (which has no traction). Runs after the solid's own force pass, which sets a_i.
 template <int D>
 struct FluidOnSolidPass {
+  static constexpr FieldNames neighbour_reads = kFluidPairReads;
+  static constexpr FieldNames writes{"acceleration"};
   PairContext<D> c;  // lists, kernel, particles, materials
   FluidForceOptions opt;
   bool pressure;

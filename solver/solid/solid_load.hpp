@@ -15,6 +15,7 @@
 
 #include "core/material.hpp"
 #include "state/particles.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
@@ -43,6 +44,8 @@ struct SolidLoads {
 
 template <int D>
 struct SolidLoadPass {
+  static constexpr FieldNames neighbour_reads{};
+  static constexpr FieldNames writes{"acceleration", "velocity", "xsph_correction"};
   ParticleView<D> s;
   SolidLoads<D> loads;
   PSPH_HD void operator()(int i) const {

@@ -27,7 +27,7 @@ class SolidLoadStage {
 
   void apply(StepContext<D, B>& cx) const {
     const StageScope scope("solid loads");
-    if (active()) B::for_each(cx.n(), SolidLoadPass<D>{cx.view(), at(cx.force_time, cx.spacing)});
+    if (active()) cx.launch(SolidLoadPass<D>{cx.view(), at(cx.force_time, cx.spacing)});
   }
 
  private:

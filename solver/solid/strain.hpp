@@ -12,6 +12,7 @@
 #include "solid/constitutive.hpp"
 #include "solid/elastic_force.hpp"
 #include "stage/pass_context.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
@@ -34,6 +35,8 @@ struct SolidNeighbours {
 // Per elastic particle: the gradient correction S_i, G_i, K_i over the solid's neighbours, stored.
 template <int D, class NB = NeighbourList<D>>
 struct SolidCorrectionPass {
+  static constexpr FieldNames neighbour_reads = kSolidPairReads;
+  static constexpr FieldNames writes{};
   PairContext<D, NB> c;
   PSPH_HD GradientCorrection<D> correction(int i) const {
     auto volume = [&](int j) { return solid_sum_volume(c.s, j); };
@@ -59,6 +62,8 @@ PSPH_HD inline GradientCorrection<D> stored_correction(const ParticleView<D>& s,
 // last list build), so that only the displacement sum remains.
 template <int D, class NB = NeighbourList<D>>
 struct StrainStressPass {
+  static constexpr FieldNames neighbour_reads = kSolidPairReads;
+  static constexpr FieldNames writes{"strain", "stress", "deformation_gradient"};
   PairContext<D, NB> c;  // the solid's neighbours, kernel, particles, materials
   bool corrections_kept = false;
   PSPH_HD void operator()(int i) const {

@@ -12,11 +12,14 @@
 #include "solid/hourglass.hpp"
 #include "solid/strain.hpp"
 #include "stage/pass_context.hpp"
+#include "core/pass_fields.hpp"
 
 namespace psph {
 
 template <int D, class NB = NeighbourList<D>>
 struct StressForcePass {
+  static constexpr FieldNames neighbour_reads = kSolidPairReads;
+  static constexpr FieldNames writes{"acceleration"};
   PairContext<D, NB> c;  // the solid's neighbours, kernel, particles, materials
   Real damping = 0;  // zeta (1/s): a -= zeta v
   // The fluid's traction P_i b_i, b_i = sum_j V_j (g_ij - g_ji) over the solid's neighbours j, P_i
@@ -55,7 +58,8 @@ struct StressForcePass {
       f += t * solid_sum_volume(c.s, j);
     });
     Vec<D> a = f * (Real(1) / c.s.rho[i]) + f_hg * (hourglass / c.s.rho0[i]);  // alpha V_i / m_i = alpha / rho0_i
-    if (c.s.mirror[i] >= 0) a += clamp_reaction(c.nb, c.kern, c.s, c.mats, c.s.index_of_id[c.s.mirror[i]]) * (Real(1) / c.s.m[i]);
+    const int w = c.s.mirror[i] >= 0 ? c.s.index_of_id[c.s.mirror[i]] : -1;  // -1 also: a halo copy's far wall
+    if (w >= 0) a += clamp_reaction(c.nb, c.kern, c.s, c.mats, w) * (Real(1) / c.s.m[i]);
     c.s.a[i] = a + c.mats.body_force[mi] - c.s.v[i] * damping;
   }
 };

@@ -68,6 +68,12 @@ struct Gather {
   PSPH_HD void operator()(int i) const { out[i] = in[perm[i]]; }
 };
 
+// index_of_id[id] = -1: no particle with that id here (a run shared out over processes holds
+// some of them), before IndexOfIdPass.
+struct ClearIndexOfId {
+  std::int32_t* index;
+  PSPH_HD void operator()(int k) const { index[k] = -1; }
+};
 // index_of_id[id[i]] = i, after every reordering (ids are unique: no write conflicts).
 template <int D>
 struct IndexOfIdPass {
@@ -121,6 +127,16 @@ class ParticleState {
     constexpr FieldType type = std::is_same_v<T, std::uint8_t> ? FieldType::Byte
                                : std::is_same_v<T, std::int32_t> ? FieldType::Int : FieldType::Real;
     reg(arr, type, comps, name, unit, what);
+  }
+
+  // A new particle count (a process's share of a run changed: parallel/particle_domain.hpp): the
+  // registered fields hold their new values already; the unregistered per-particle arrays in use
+  // are resized, to be recomputed before they are read.
+  void set_count(int n) {
+    n_ = n;
+    near_fluid.resize(n);
+    auto fit = [n](auto&... arrays) { ((arrays.size() ? arrays.resize(n) : void()), ...); };
+    fit(shepard, shepard_grad, kcorr, grad_u, piola, visc_scale, p_ambient, fluid_contact);
   }
 
   // Reorders every registered field: field[i] <- field[perm[i]].

@@ -1,0 +1,48 @@
+#pragma once
+// The processes of a run as the solver sees them: global reductions and byte exchanges. One
+// process (SerialCommunicator) is the default; parallel/mpi_communicator.cpp implements it over
+// MPI. No stage includes MPI: they reduce through the step context, which reduces through this.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/exact_sum.hpp"
+
+namespace psph {
+
+using Bytes = std::vector<unsigned char>;
+
+class Communicator {
+ public:
+  virtual ~Communicator() = default;
+  virtual int rank() const { return 0; }
+  virtual int size() const { return 1; }
+  // Exact sums over the processes (core/exact_sum.hpp): their digits add as integers, so the
+  // result does not depend on how the terms were shared out.
+  virtual void sum(ExactSum*, int) {}
+  virtual double max(double x) { return x; }
+  virtual long long max(long long x) { return x; }
+  virtual long long sum(long long x) { return x; }
+  // send[r] goes to process r; recv[q] is what process q sent here (sizes known to no one before).
+  virtual void exchange(const std::vector<Bytes>& send, std::vector<Bytes>& recv) { recv = send; }
+  // Process `root`'s bytes, on every process.
+  virtual void broadcast(Bytes&, int /*root*/) {}
+  // Every process's bytes, on every process.
+  virtual std::vector<Bytes> all_gather(const Bytes& mine) { return {mine}; }
+  virtual void barrier() {}
+  // Ends every process at once (a process that cannot continue alone): never returns.
+  [[noreturn]] virtual void abort(int code);
+  bool parallel() const { return size() > 1; }
+};
+
+// The process's communicator: MPI's world when launched by mpirun/srun (and built with MPI),
+// otherwise one process. Initialises MPI on first use.
+Communicator& world();
+// What launched this process: "mpirun"-like (an MPI launcher's environment) or nothing.
+bool launched_by_mpi();
+// This process's rank among those of its node (the launcher's environment; 0 if none says).
+int local_rank();
+// MPI's finalisation at a normal exit (a no-op without MPI).
+void finalise_world();
+
+}  // namespace psph

@@ -1,0 +1,138 @@
+// The communicator over MPI's world (OpenMPI from Debian). Only the main thread calls MPI
+// (MPI_THREAD_FUNNELED): the render and dashboard threads never do.
+#define OMPI_SKIP_MPICXX 1  // the C API only (the C++ bindings are deprecated and not linked)
+#define MPICH_SKIP_MPICXX 1
+#include <mpi.h>
+
+#include <climits>
+#include <stdexcept>
+#include <string>
+
+#include "parallel/communicator.hpp"
+
+namespace psph {
+namespace {
+
+void check(int err, const char* what) {
+  if (err == MPI_SUCCESS) return;
+  char text[MPI_MAX_ERROR_STRING];
+  int len = 0;
+  MPI_Error_string(err, text, &len);
+  throw std::runtime_error(std::string("MPI error in ") + what + ": " + std::string(text, len));
+}
+
+int bytes_count(std::size_t n) {
+  if (n > std::size_t(INT_MAX)) throw std::runtime_error("an MPI message over 2 GiB");
+  return int(n);
+}
+
+class MpiCommunicator final : public Communicator {
+ public:
+  MpiCommunicator() {
+    int ready = 0, provided = 0;
+    MPI_Initialized(&ready);
+    if (!ready) check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  }
+  int rank() const override { return rank_; }
+  int size() const override { return size_; }
+
+  void sum(ExactSum* acc, int count) override {
+    std::vector<long long> words(std::size_t(count) * ExactSum::kDigits);
+    std::vector<int> special(count);
+    for (int k = 0; k < count; ++k) {
+      acc[k].carry();  // digits under 2^32: the sum over processes cannot overflow
+      for (int w = 0; w < ExactSum::kDigits; ++w) words[std::size_t(k) * ExactSum::kDigits + w] = acc[k].words()[w];
+      special[k] = acc[k].special();
+    }
+    check(MPI_Allreduce(MPI_IN_PLACE, words.data(), int(words.size()), MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD),
+          "MPI_Allreduce");
+    check(MPI_Allreduce(MPI_IN_PLACE, special.data(), count, MPI_INT, MPI_BOR, MPI_COMM_WORLD), "MPI_Allreduce");
+    for (int k = 0; k < count; ++k) {
+      for (int w = 0; w < ExactSum::kDigits; ++w) acc[k].words()[w] = words[std::size_t(k) * ExactSum::kDigits + w];
+      acc[k].special() = special[k];
+    }
+  }
+  double max(double x) override {
+    check(MPI_Allreduce(MPI_IN_PLACE, &x, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+    return x;
+  }
+  long long max(long long x) override {
+    check(MPI_Allreduce(MPI_IN_PLACE, &x, 1, MPI_LONG_LONG, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+    return x;
+  }
+  long long sum(long long x) override {
+    check(MPI_Allreduce(MPI_IN_PLACE, &x, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
+    return x;
+  }
+
+  void exchange(const std::vector<Bytes>& send, std::vector<Bytes>& recv) override {
+    std::vector<int> scount(size_), rcount(size_), sdispl(size_), rdispl(size_);
+    Bytes out;
+    for (int r = 0; r < size_; ++r) {
+      sdispl[r] = bytes_count(out.size());
+      scount[r] = bytes_count(send[r].size());
+      out.insert(out.end(), send[r].begin(), send[r].end());
+    }
+    check(MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, MPI_COMM_WORLD), "MPI_Alltoall");
+    std::size_t total = 0;
+    for (int r = 0; r < size_; ++r) rdispl[r] = bytes_count(total), total += std::size_t(rcount[r]);
+    Bytes in(total);
+    check(MPI_Alltoallv(out.data(), scount.data(), sdispl.data(), MPI_BYTE, in.data(), rcount.data(),
+                        rdispl.data(), MPI_BYTE, MPI_COMM_WORLD),
+          "MPI_Alltoallv");
+    recv.assign(size_, Bytes{});
+    for (int r = 0; r < size_; ++r) recv[r].assign(in.begin() + rdispl[r], in.begin() + rdispl[r] + rcount[r]);
+  }
+
+  void broadcast(Bytes& bytes, int root) override {
+    long long n = static_cast<long long>(bytes.size());
+    check(MPI_Bcast(&n, 1, MPI_LONG_LONG, root, MPI_COMM_WORLD), "MPI_Bcast");
+    bytes.resize(std::size_t(n));
+    check(MPI_Bcast(bytes.data(), bytes_count(bytes.size()), MPI_BYTE, root, MPI_COMM_WORLD), "MPI_Bcast");
+  }
+
+  std::vector<Bytes> all_gather(const Bytes& mine) override {
+    int n = bytes_count(mine.size());
+    std::vector<int> counts(size_), displ(size_);
+    check(MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD), "MPI_Allgather");
+    std::size_t total = 0;
+    for (int r = 0; r < size_; ++r) displ[r] = bytes_count(total), total += std::size_t(counts[r]);
+    Bytes all(total);
+    check(MPI_Allgatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), displ.data(), MPI_BYTE, MPI_COMM_WORLD),
+          "MPI_Allgatherv");
+    std::vector<Bytes> out(size_);
+    for (int r = 0; r < size_; ++r) out[r].assign(all.begin() + displ[r], all.begin() + displ[r] + counts[r]);
+    return out;
+  }
+
+  void barrier() override { MPI_Barrier(MPI_COMM_WORLD); }
+  [[noreturn]] void abort(int code) override {
+    MPI_Abort(MPI_COMM_WORLD, code);
+    Communicator::abort(code);
+  }
+
+ private:
+  int rank_ = 0, size_ = 1;
+};
+
+}  // namespace
+
+Communicator& world() {
+  if (!launched_by_mpi()) {
+    static Communicator one;
+    return one;
+  }
+  static MpiCommunicator mpi;
+  return mpi;
+}
+
+void finalise_world() {
+  int ready = 0, done = 0;
+  MPI_Initialized(&ready);
+  MPI_Finalized(&done);
+  if (ready && !done) MPI_Finalize();
+}
+
+}  // namespace psph

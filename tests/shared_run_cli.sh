@@ -1,0 +1,74 @@
+#!/bin/bash
+# `mpirun -n N poresph run` through the real binary: on 2 and 3 processes the run directory holds
+# exactly the monitors, extracts and checkpoints of one process; a checkpoint of one process
+# restarts on three and ends as the uninterrupted run; SIGTERM ends every process with a final
+# checkpoint (exit 130); a process killed with SIGKILL ends the job without a hang;
+# a case that cannot be shared out yet is refused once, before any work, with nothing left behind.
+# Usage: shared_run_cli.sh PORESPH MPIEXEC SRC WORK
+set -u
+poresph=$(realpath "$1") mpiexec=$2 src=$(realpath "$3") work=$4
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+fail() { echo "shared run: $*" >&2; exit 1; }
+export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1
+
+sed 's/^end = 0.5/end = 0.02/' "$src/cases/poiseuille_2d.toml" > short.toml
+sed 's/^end = 0.5/end = 0.04/' "$src/cases/poiseuille_2d.toml" > longer.toml
+sed 's/^end = 0.5/end = 1000.0/' "$src/cases/poiseuille_2d.toml" > endless.toml
+
+same_run() {  # the run directories $1 and $2 hold the same numbers
+  cmp -s "$1/monitors.csv" "$2/monitors.csv" || fail "$2/monitors.csv differs from $1's"
+  for f in "$1"/checkpoints/*.ckpt "$1"/extracts/*.vtp "$1"/extracts/particles.pvd; do
+    cmp -s "$f" "$2/${f#$1/}" || fail "$2/${f#$1/} differs from $1's"
+  done
+}
+
+"$poresph" run longer.toml --out one --quiet > /dev/null || fail "the one-process run failed"
+for n in 2 3; do
+  "$mpiexec" -n $n "$poresph" run longer.toml --out shared$n --quiet > /dev/null || fail "the run on $n processes failed"
+  same_run one shared$n
+  [ "$(grep -c '"particles": 208' shared$n/summary.json)" = 1 ] || fail "summary.json of $n processes: $(cat shared$n/summary.json)"
+  [ "$(grep -c '^poresph run' shared$n/log.txt)" = 1 ] || fail "log.txt of $n processes is not written once"
+done
+
+# One process's checkpoint at t = 0.02, continued on three.
+"$poresph" run short.toml --out first --quiet > /dev/null || fail "the short run failed"
+"$mpiexec" -n 3 "$poresph" run longer.toml --restart first --out resumed --quiet > /dev/null || fail "the restart on 3 processes failed"
+last=$(ls one/checkpoints | tail -1)
+cmp -s "one/checkpoints/$last" "resumed/checkpoints/$last" || fail "the restart on 3 processes ends elsewhere than the uninterrupted run"
+
+# SIGTERM: a final checkpoint from every process and exit 130, sent to the processes (as a batch
+# system's scancel does) or to the launcher, which forwards it (OpenMPI's mpirun then exits 1
+# whatever its processes' codes: measured with OpenMPI 4.1).
+interrupt() {  # name, whom to signal (launcher or processes), expected launcher exit code
+  "$mpiexec" -n 2 "$poresph" run endless.toml --out "$1" --quiet > "$1.out" 2>&1 &
+  local pid=$! rc
+  for _ in $(seq 300); do [ -s "$1/monitors.csv" ] && break; sleep 0.05; done
+  sleep 1
+  if [ "$2" = launcher ]; then kill -TERM $pid; else pkill -TERM -f "^$poresph run endless.toml --out $1"; fi
+  wait $pid
+  rc=$?
+  [ $rc = "$3" ] || fail "SIGTERM to the $2: exit $rc, expected $3: $(cat "$1.out")"
+  grep -q '"status": "interrupted"' "$1/summary.json" || fail "SIGTERM to the $2: $(cat "$1/summary.json")"
+  ls "$1"/checkpoints/*.ckpt > /dev/null 2>&1 || fail "SIGTERM to the $2: no final checkpoint"
+}
+interrupt stopped processes 130
+interrupt stopped_launcher launcher 1
+
+# SIGKILL on one process: the job ends, without a hang.
+"$mpiexec" -n 2 "$poresph" run endless.toml --out killed --quiet > killed.out 2>&1 &
+pid=$!
+sleep 2
+victim=$(pgrep -f "^$poresph run endless.toml --out killed" | tail -1)
+[ -n "$victim" ] || fail "SIGKILL: no process to kill"
+kill -KILL "$victim"
+for _ in $(seq 300); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+if kill -0 $pid 2>/dev/null; then kill -KILL $pid; fail "SIGKILL: the job still runs 30 s after one process was killed"; fi
+wait $pid && fail "SIGKILL: the job exited 0"
+
+# Refused once, before any work: a case with a large-strain solid (not shared out yet).
+"$mpiexec" -n 2 "$poresph" run "$src/cases/softening_bar_2d.toml" --out refused > refused.out 2>&1
+rc=$?
+[ $rc = 2 ] || fail "refusal: exit $rc, expected 2: $(cat refused.out)"
+[ "$(grep -c 'cannot run over several processes' refused.out)" = 1 ] || fail "refusal not said once: $(cat refused.out)"
+[ -e refused ] && fail "a refused run left its directory behind"
+echo "shared run command-line tests passed"
