@@ -7,6 +7,7 @@
 
 #include "app/bench_accuracy.hpp"
 #include "app/bench_cases.hpp"
+#include "app/bench_decomposition.hpp"
 #include "app/bench_stability.hpp"
 #include "app/commands.hpp"
 #include "app/profile_report.hpp"
@@ -14,6 +15,20 @@
 namespace psph {
 
 namespace {
+
+// Halo copies and cost balance of the real geometries over 2 ... 4,096 processes (--quick: up to 64).
+int decomposition_counts(bool json, bool quick) {
+  std::vector<int> p;
+  for (int n = 2; n <= (quick ? 64 : 4096); n *= 2) p.push_back(n);
+  const auto recs = decomposition_sweep(p, json ? &std::cerr : &std::cout);
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& r : recs)
+    out.push_back({{"case", r.case_name}, {"processes", r.processes}, {"particles", r.particles},
+                   {"cost_imbalance", r.cost_imbalance}, {"halo_mean", r.halo_mean}, {"halo_max", r.halo_max},
+                   {"halo_per_particle", r.halo_per_particle}, {"owned_mean", r.owned_mean}});
+  if (json) std::cout << out.dump(2) << "\n";
+  return 0;
+}
 
 int accuracy(bool json, const std::string& backend, bool quick) {
   const auto recs = accuracy_sweep(backend, !quick, json ? &std::cerr : &std::cout);
@@ -64,8 +79,9 @@ int stability(bool json, const std::string& backend, bool quick, const std::vect
 }  // namespace
 
 int cmd_bench(const std::vector<std::string>& names, bool json, const std::string& backend, bool quick,
-              bool accuracy_sweep, bool stability_sweep_, bool profile) {
+              bool accuracy_sweep, bool stability_sweep_, bool profile, bool decomposition) {
   if (accuracy_sweep) return accuracy(json, backend, quick);
+  if (decomposition) return decomposition_counts(json, quick);
   if (stability_sweep_) return stability(json, backend, quick, names);
   std::vector<BenchSpec> specs;
   for (const BenchSpec& spec : bench_specs(backend, quick))

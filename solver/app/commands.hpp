@@ -38,6 +38,6 @@ int cmd_validate_list();
 // `names`: benchmarks to run (default all); an unknown name is exit 2. `profile`: each benchmark's
 // time by stage and pass too (app/profile_report.hpp).
 int cmd_bench(const std::vector<std::string>& names, bool json, const std::string& backend, bool quick,
-              bool accuracy, bool stability, bool profile);
+              bool accuracy, bool stability, bool profile, bool decomposition = false);
 
 }  // namespace psph

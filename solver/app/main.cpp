@@ -90,6 +90,9 @@ int main(int argc, char** argv) {
   bench->add_flag("--quick", quick, "small sizes only (a smoke run); with --accuracy: no sphere arrays");
   bench->add_flag("--accuracy", accuracy, "run time against error over kernels and resolutions");
   bench->add_flag("--stability", stability, "sweep the time-step factor and the initial disorder");
+  bool decomposition = false;
+  bench->add_flag("--decomposition", decomposition,
+                  "halo and balance of SPHERIC test 2 at 6 mm and the published claystone cell over 2 ... 4,096 processes");
   bool profile = false;
   bench->add_flag("--profile", profile, "print each benchmark's time by stage and pass (with --json: a \"profile\" record)");
   bench->add_option("--backend", vbackend, "cpu or cuda")->check(CLI::IsMember(backends));
@@ -121,7 +124,7 @@ int main(int argc, char** argv) {
       for (const auto& spec : psph::bench_specs(vbackend, quick)) std::cout << spec.name << "\n";
       return 0;
     }
-    if (*bench) return psph::cmd_bench(bench_names, json, vbackend, quick, accuracy, stability, profile);
+    if (*bench) return psph::cmd_bench(bench_names, json, vbackend, quick, accuracy, stability, profile, decomposition);
     if (*demo) return psph::cmd_demo(ro);
     if (*image) return psph::cmd_image(*image, image_opt);
     return 1;

@@ -467,7 +467,8 @@ nlohmann::json RunDriver::summary(double wall) const {
   const SharingStats sh = engine_->sharing();
   if (sh.processes > 1)
     j["processes"] = {{"count", sh.processes}, {"rebalances", sh.rebalances}, {"imbalance", sh.imbalance},
-                      {"halo_particles", sh.halo_particles}};
+                      {"halo_particles", sh.halo_particles}, {"halo_bytes", sh.halo_bytes},
+                      {"halo_refreshes", sh.refreshes}};
   j["compressibility"] = to_json(compressibility_);
   j["density_deviation"] = {{"bound", w.bound}, {"max", w.peak}, {"max_time", w.peak_time},
                             {"max_step", w.peak_step}, {"first_exceeded", first}};

@@ -23,6 +23,7 @@ namespace psph {
 struct CpuBackend {
   static constexpr const char* name = "cpu";
   static constexpr bool list_rows_contiguous = true;  // neighbour lists row-major (cache lines per particle)
+  static constexpr bool host_memory = true;           // its arrays are the host's: read in place
 
   static void* allocate(std::size_t bytes) {
     if (bytes == 0) return nullptr;

@@ -150,6 +150,7 @@ struct CudaBackend {
   static constexpr const char* name = "cuda";
   static constexpr int block = 256;
   static constexpr bool list_rows_contiguous = false;  // column-major lists: coalesced across a warp
+  static constexpr bool host_memory = false;           // halos go through host copies
 
   static void* allocate(std::size_t bytes) {
     if (bytes == 0) return nullptr;

@@ -13,14 +13,10 @@ template <int D, class B>
 class OpenBoundaryStage {
  public:
   bool active() const { return active_; }
-  // How far beyond one support radius a buffer particle reads (its mirror point's neighbourhood,
-  // boundary/open_boundary.hpp): a halo of the lists' radius plus this serves it.
-  double reach() const { return active_ ? reach_ : 0; }
 
   void setup(StepContext<D, B>& cx, const SceneOpenBoundary& ob, double support_radius, double spacing) {
     active_ = ob.axis >= 0;
     if (!active_) return;
-    reach_ = ob.thickness + 2 * support_radius;
     OpenBoundaryZone<D>& z = cx.mats.open;
     const Real lo = Real(ob.lower), hi = Real(ob.upper), b = Real(ob.thickness);
     z.axis = ob.axis;
@@ -74,7 +70,6 @@ class OpenBoundaryStage {
 
  private:
   bool active_ = false;
-  double reach_ = 0;
 };
 
 }  // namespace psph

@@ -31,6 +31,8 @@ struct SharingStats {
   int rebalances = 0;
   double imbalance = 1;
   long long halo_particles = 0;
+  long long halo_bytes = 0;  // sent by every process in halo refreshes, to the last statistics (stats())
+  long long refreshes = 0;   // halo refreshes of one process, likewise
 };
 
 class Engine {

@@ -58,6 +58,18 @@ struct Scene {
   int count() const { return static_cast<int>(material.size()); }
 };
 
+// How far beyond its lists' radius a process of a shared run reads (parallel/): an open
+// boundary's buffer reads around its mirror point (the buffer's thickness and two support radii
+// further), a clamp its partner up to two support radii away and the partner's neighbours.
+inline double halo_reach(const Scene& sc) {
+  const double h = sc.options.support_radius;
+  bool walls = false, elastic = false;
+  for (const auto& m : sc.materials)
+    walls |= m.props.kind == MaterialKind::Wall, elastic |= m.props.kind == MaterialKind::Elastic;
+  const double open = sc.open_boundary.axis >= 0 ? sc.open_boundary.thickness + 2 * h : 0;
+  return std::max(open, walls && elastic ? 2 * h : 0.0);
+}
+
 // sigma / mu_liquid, the velocity scale of capillary flow (spurious currents are measured in it);
 // 0 without surface tension or a viscous liquid.
 inline double capillary_speed(const Scene& sc) {

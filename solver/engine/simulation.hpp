@@ -19,6 +19,7 @@
 #include "rigid/rigid_stage.hpp"
 #include "engine/scene.hpp"
 #include "engine/clamp_partners.hpp"
+#include "parallel/particle_cost.hpp"
 #include "solid/coupling_stage.hpp"
 #include "solid/elastic_stage.hpp"
 #include "solid/solid_load_stage.hpp"
@@ -27,18 +28,24 @@
 
 namespace psph {
 
-// Adds the wall time of a scope to `seconds` (a process's time in its steps, which a run shared
-// out over processes balances).
+// Adds a scope's wall time, less its time in calls to the other processes, to `seconds`: a
+// process's own work in its steps, which a run shared out over processes balances.
 class BusyClock {
  public:
-  explicit BusyClock(double& seconds) : seconds_(seconds), t0_(std::chrono::steady_clock::now()) {}
-  ~BusyClock() { seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count(); }
+  BusyClock(double& seconds, const Communicator& comm)
+      : seconds_(seconds), comm_(comm), t0_(std::chrono::steady_clock::now()), waited0_(comm.seconds_in_calls()) {}
+  ~BusyClock() {
+    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count() -
+                (comm_.seconds_in_calls() - waited0_);
+  }
   BusyClock(const BusyClock&) = delete;
   BusyClock& operator=(const BusyClock&) = delete;
 
  private:
   double& seconds_;
+  const Communicator& comm_;
   std::chrono::steady_clock::time_point t0_;
+  double waited0_;
 };
 
 template <int D, class B>
@@ -81,7 +88,7 @@ class Simulation final : public Engine {
   // The step: kick, drift, forces at the new positions (eqs. 48, 49).
   void step(double t_stop) override {
     const ProfileRecording recording(profile_);
-    const BusyClock busy(busy_);
+    const BusyClock busy(busy_, comm_);
     const double dt = next_dt(t_stop);
     ramp(t_ + dt);  // the forces evaluated in this step are those at its end
     open_.buffer_velocity(cx_, dt);
@@ -234,7 +241,6 @@ class Simulation final : public Engine {
   void share_out(const Scene& sc);
   void plan_halo();
   std::vector<double> particle_costs() const;
-  double halo_width() const;
   void check_clamp_partners();
   std::vector<double> rebalance_costs();
   std::vector<long long> output_order() const;
@@ -252,6 +258,7 @@ class Simulation final : public Engine {
   std::unique_ptr<ParticleDomain<D, B>> domain_;  // a run shared out over processes only
   bool planned_ = false;
   int particles_ = 0;  // of the whole run
+  double halo_width_ = 0;
   double busy_ = 0;    // seconds in step() since the last list build
   SharingStats sharing_;
   StepContext<D, B> cx_;

@@ -62,26 +62,17 @@ void Simulation<D, B>::share_out(const Scene& sc) {
   std::array<bool, 3> periodic{false, false, false};
   for (int k = 0; k < D; ++k) box.lo[k] = sc.lower[k], box.hi[k] = sc.upper[k], periodic[k] = sc.periodic[k];
   domain_ = std::make_unique<ParticleDomain<D, B>>(comm_, box, periodic);
-  domain_->split(cx_.s, particle_costs(), halo_width());
+  halo_width_ = cx_.neighbours.radius() + halo_reach(sc);  // every neighbour in the lists, and beyond
+  domain_->split(cx_.s, particle_costs(), halo_width_);
   cx_.domain = domain_.get();
 }
 
-// The halo: every neighbour in the lists of a process's particles, and what the open boundaries'
-// buffers read beyond them.
-// Clamps read their partner (up to two support radii away) and its neighbours.
-template <int D, class B>
-double Simulation<D, B>::halo_width() const {
-  const double clamps = cx_.walls && cx_.elastic ? 2 * opt_.support_radius : 0;
-  return cx_.neighbours.radius() + std::max(open_.reach(), clamps);
-}
-
-// Each particle's share of a step's cost, which the decomposition balances: a fluid particle's
-// neighbour sums against a wall's (its lists only near the fluid).
+// Each particle's share of a step's cost, which the decomposition balances (parallel/particle_cost.hpp).
 template <int D, class B>
 std::vector<double> Simulation<D, B>::particle_costs() const {
   const std::vector<std::uint8_t> mat = cx_.s.material.host();
   std::vector<double> cost(mat.size());
-  for (std::size_t i = 0; i < mat.size(); ++i) cost[i] = cx_.mats.is_dynamic(mat[i]) ? 1.0 : 0.25;
+  for (std::size_t i = 0; i < mat.size(); ++i) cost[i] = particle_cost(cx_.mats.m[mat[i]].kind);
   return cost;
 }
 
@@ -282,6 +273,7 @@ StepStats Simulation<D, B>::stats() {
   st.dissipated_energy = elastic_.dissipated_energy();
   st.dt_limit = dt_limit_;
   st.linear_iterations = fluid_.linear_iterations();
+  if (domain_) sharing_.halo_bytes = comm_.sum(domain_->halo_bytes()), sharing_.refreshes = domain_->refreshes();
   return st;
 }
 
@@ -329,7 +321,7 @@ void Simulation<D, B>::restore(const Checkpoint& c) {
     if (const CheckpointField* cf = c.field(f.info.name)) f.from_host_bytes(cf->bytes);
   if (domain_) {  // every particle is here: this process keeps its share, cut anew
     cx_.s.set_count(n);
-    domain_->split(cx_.s, particle_costs(), halo_width());
+    domain_->split(cx_.s, particle_costs(), halo_width_);
     planned_ = false;  // the share is new: the next list build plans its halo
   }
   rigid_.load(c);

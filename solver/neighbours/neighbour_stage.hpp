@@ -45,6 +45,7 @@ class NeighbourStage {
     if (!CellGrid<D>::make(lo, hi, per, Real(radius_), grid))
       throw std::invalid_argument("a periodic axis is shorter than 3 support radii");
     bucket_start_.resize(2 * grid.total), bucket_end_.resize(2 * grid.total);
+    fluid_lo_.resize(grid.total), fluid_hi_.resize(grid.total), cell_near_.resize(grid.total);
     return grid;
   }
 
@@ -108,8 +109,12 @@ class NeighbourStage {
       B::for_each(static_cast<int>(s.index_of_id.size()), ClearIndexOfId{s.index_of_id.data()});
       B::for_each(n, IndexOfIdPass<D>{s.view()});
     }
-    if (!every_particle && needs.walls && needs.fluid)
-      B::for_each(n, NearFluid<D>{cells(grid, s.x.data()), s.near_fluid.data()});
+    if (!every_particle && needs.walls && needs.fluid) {
+      const NeighbourView<D> nb = cells(grid, s.x.data());
+      B::for_each(grid.total, CellFluidBox<D>{nb, fluid_lo_.data(), fluid_hi_.data()});
+      B::for_each(grid.total, CellNearFluid<D>{nb, fluid_lo_.data(), fluid_hi_.data(), cell_near_.data()});
+      B::for_each(n, NearFluid<D>{nb, fluid_lo_.data(), fluid_hi_.data(), cell_near_.data(), s.near_fluid.data()});
+    }
     else  // without fluids every wall lists all its neighbours
       s.near_fluid.upload(std::vector<std::uint8_t>(n, 1));
     build_lists(s, grid, mats, needs);
@@ -138,6 +143,8 @@ class NeighbourStage {
   DeviceArray<int, B> keys_, perm_, bucket_start_, bucket_end_;
   DeviceArray<int, B> index_, count_, fluid_count_;
   DeviceArray<Vec<D>, B> x_build_;  // positions at the last list build
+  DeviceArray<Vec<D>, B> fluid_lo_, fluid_hi_;  // each cell's fluid box (neighbours/fluid_proximity.hpp)
+  DeviceArray<std::uint8_t, B> cell_near_;     // fluid in a cell's stencil
 };
 
 }  // namespace psph

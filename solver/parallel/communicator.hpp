@@ -33,6 +33,8 @@ class Communicator {
   // Ends every process at once (a process that cannot continue alone): never returns.
   [[noreturn]] virtual void abort(int code);
   bool parallel() const { return size() > 1; }
+  // Seconds spent in the calls above since the start (waiting for other processes included).
+  virtual double seconds_in_calls() const { return 0; }
 };
 
 // The process's communicator: MPI's world when launched by mpirun/srun (and built with MPI),

@@ -26,6 +26,19 @@ int bytes_count(std::size_t n) {
   return int(n);
 }
 
+// Adds a call's wall time to `seconds`.
+class CallClock {
+ public:
+  explicit CallClock(double& seconds) : seconds_(seconds), t0_(MPI_Wtime()) {}
+  ~CallClock() { seconds_ += MPI_Wtime() - t0_; }
+  CallClock(const CallClock&) = delete;
+  CallClock& operator=(const CallClock&) = delete;
+
+ private:
+  double& seconds_;
+  double t0_;
+};
+
 class MpiCommunicator final : public Communicator {
  public:
   MpiCommunicator() {
@@ -39,6 +52,7 @@ class MpiCommunicator final : public Communicator {
   int size() const override { return size_; }
 
   void sum(ExactSum* acc, int count) override {
+    const CallClock clock(seconds_);
     std::vector<long long> words(std::size_t(count) * ExactSum::kDigits);
     std::vector<int> special(count);
     for (int k = 0; k < count; ++k) {
@@ -55,19 +69,23 @@ class MpiCommunicator final : public Communicator {
     }
   }
   double max(double x) override {
+    const CallClock clock(seconds_);
     check(MPI_Allreduce(MPI_IN_PLACE, &x, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
     return x;
   }
   long long max(long long x) override {
+    const CallClock clock(seconds_);
     check(MPI_Allreduce(MPI_IN_PLACE, &x, 1, MPI_LONG_LONG, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
     return x;
   }
   long long sum(long long x) override {
+    const CallClock clock(seconds_);
     check(MPI_Allreduce(MPI_IN_PLACE, &x, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
     return x;
   }
 
   void exchange(const std::vector<Bytes>& send, std::vector<Bytes>& recv) override {
+    const CallClock clock(seconds_);
     std::vector<int> scount(size_), rcount(size_), sdispl(size_), rdispl(size_);
     Bytes out;
     for (int r = 0; r < size_; ++r) {
@@ -87,6 +105,7 @@ class MpiCommunicator final : public Communicator {
   }
 
   void broadcast(Bytes& bytes, int root) override {
+    const CallClock clock(seconds_);
     long long n = static_cast<long long>(bytes.size());
     check(MPI_Bcast(&n, 1, MPI_LONG_LONG, root, MPI_COMM_WORLD), "MPI_Bcast");
     bytes.resize(std::size_t(n));
@@ -94,6 +113,7 @@ class MpiCommunicator final : public Communicator {
   }
 
   std::vector<Bytes> all_gather(const Bytes& mine) override {
+    const CallClock clock(seconds_);
     int n = bytes_count(mine.size());
     std::vector<int> counts(size_), displ(size_);
     check(MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD), "MPI_Allgather");
@@ -108,6 +128,7 @@ class MpiCommunicator final : public Communicator {
   }
 
   void barrier() override { MPI_Barrier(MPI_COMM_WORLD); }
+  double seconds_in_calls() const override { return seconds_; }
   [[noreturn]] void abort(int code) override {
     MPI_Abort(MPI_COMM_WORLD, code);
     Communicator::abort(code);
@@ -115,6 +136,7 @@ class MpiCommunicator final : public Communicator {
 
  private:
   int rank_ = 0, size_ = 1;
+  double seconds_ = 0;
 };
 
 }  // namespace

@@ -8,6 +8,18 @@
 
 namespace psph {
 
+// A pass on the particles this process owns only: a halo copy's results would be its owner's,
+// brought before any pass reads them (stage/step_context.hpp: launch).
+template <class F>
+struct OwnedPass {
+  using named_as = F;
+  F f;
+  const std::uint8_t* owned;
+  PSPH_HD void operator()(int i) const {
+    if (owned[i]) f(i);
+  }
+};
+
 template <class T, class F>
 struct OwnedTerm {
   using named_as = F;  // profiled as the pass it wraps

@@ -30,6 +30,9 @@ class ParticleDomain {
   const std::uint8_t* owned() const { return comm_.parallel() ? owned_.data() : nullptr; }
   int owned_count() const { return owned_count_; }
   int halo_count() const { return int(owned_.size()) - owned_count_; }
+  // Bytes this process sent in halo refreshes, and how many refreshes, since the start.
+  long long halo_bytes() const { return halo_bytes_; }
+  long long refreshes() const { return refreshes_; }
 
   // The first share: every process holds every particle (the scene); the cuts balance `weight`
   // (one per particle), and each process keeps its own particles and its halo.
@@ -43,6 +46,7 @@ class ParticleDomain {
     HostFields h(s);
     h.keep(keep);
     h.upload(s);
+    plan(s);  // in the scene's order until the first sort: the same on every process
   }
 
   // At a list rebuild: the halo dropped, migrants sent to their owners, the halo gathered again.
@@ -105,18 +109,12 @@ class ParticleDomain {
 
   // The halo's values of one field from their owners.
   void refresh(const FieldHandle& f) {
-    Bytes data;
-    f.to_host_bytes(data);
-    refresh_bytes(data, f.element_bytes, f.info.name.c_str());
-    f.from_host_bytes(data);
+    refresh_raw(static_cast<unsigned char*>(f.data()), f.element_bytes, owned_.size(), f.info.name.c_str());
   }
   // The same for `n` values of a per-particle array in the backend's memory.
   template <class T>
   void refresh(T* a, std::size_t n, const char* what) {
-    Bytes data(n * sizeof(T));
-    if (n) B::download(data.data(), a, data.size());
-    refresh_bytes(data, sizeof(T), what);
-    if (n) B::upload(a, data.data(), data.size());
+    refresh_raw(reinterpret_cast<unsigned char*>(a), sizeof(T), n, what);
   }
 
   // Every owned particle's values (`elem` bytes each) on every process, in the order of `order`
@@ -241,10 +239,30 @@ class ParticleDomain {
     return got;
   }
 
-  void refresh_bytes(Bytes& data, std::size_t elem, const char* what) {
+  // In place where the backend's memory is the host's; through a host copy otherwise.
+  void refresh_raw(unsigned char* a, std::size_t elem, std::size_t n, const char* what) {
+    if (n != owned_.size())
+      throw std::logic_error(std::string("halo of '") + what + "': " + std::to_string(n) + " values for " +
+                             std::to_string(owned_.size()) + " particles");
+    if constexpr (B::host_memory) {
+      refresh_bytes(a, elem, what);
+    } else {
+      Bytes h(n * elem);
+      if (n) B::download(h.data(), a, h.size());
+      refresh_bytes(h.data(), elem, what);
+      if (n) B::upload(a, h.data(), h.size());
+    }
+  }
+
+  void refresh_bytes(unsigned char* data, std::size_t elem, const char* what) {
     std::vector<Bytes> send(comm_.size()), recv;
-    for (int r = 0; r < comm_.size(); ++r)
-      for (int i : send_[r]) send[r].insert(send[r].end(), data.begin() + std::size_t(i) * elem, data.begin() + std::size_t(i + 1) * elem);
+    for (int r = 0; r < comm_.size(); ++r) {
+      send[r].resize(send_[r].size() * elem);
+      for (std::size_t k = 0; k < send_[r].size(); ++k)
+        std::memcpy(send[r].data() + k * elem, data + std::size_t(send_[r][k]) * elem, elem);
+    }
+    for (const Bytes& b : send) halo_bytes_ += static_cast<long long>(b.size());
+    ++refreshes_;
     comm_.exchange(send, recv);
     for (int q = 0; q < comm_.size(); ++q) {
       if (recv[q].size() != recv_[q].size() * elem)
@@ -252,7 +270,7 @@ class ParticleDomain {
                                std::to_string(recv[q].size() / std::max<std::size_t>(elem, 1)) + " values for " +
                                std::to_string(recv_[q].size()) + " particles");
       for (std::size_t k = 0; k < recv_[q].size(); ++k)
-        std::memcpy(data.data() + std::size_t(recv_[q][k]) * elem, recv[q].data() + k * elem, elem);
+        std::memcpy(data + std::size_t(recv_[q][k]) * elem, recv[q].data() + k * elem, elem);
     }
   }
 
@@ -272,6 +290,7 @@ class ParticleDomain {
   DeviceArray<std::uint8_t, B> owned_;
   int owned_count_ = 0;
   std::vector<std::vector<int>> send_, recv_;
+  long long halo_bytes_ = 0, refreshes_ = 0;
 };
 
 }  // namespace psph

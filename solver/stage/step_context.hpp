@@ -86,19 +86,20 @@ struct StepContext {
     return half_skin <= 0 || max_of<Real>(neighbours.displacement(s, grid)) >= half_skin;
   }
 
-  // Launches a per-particle pass on every particle here. A run shared out over processes first
-  // brings the halo's values of the fields the pass reads of its neighbours, where a pass wrote
-  // them since they were last brought (core/pass_fields.hpp).
+  // Launches a per-particle pass on every particle here. A run shared out over processes runs it
+  // on the particles this process owns, after bringing the halo's values of the fields the pass
+  // reads of its neighbours where a pass wrote them since they were last brought
+  // (core/pass_fields.hpp); the fields it writes are then stale in the halo.
   template <class F>
   void launch(const F& pass) {
     if (!domain) return B::for_each(n(), pass);
     if constexpr (DeclaresFields<F>::value) {
       refresh_reads<F>();
-      B::for_each(n(), pass);
+      B::for_each(n(), OwnedPass<F>{pass, domain->owned()});
       for (int k = 0; k < F::writes.count; ++k) written(F::writes.names[k]);
     } else {
       for (const auto& f : s.fields().all()) refresh(f.info.name.c_str());
-      B::for_each(n(), pass);
+      B::for_each(n(), OwnedPass<F>{pass, domain->owned()});
       for (const auto& f : s.fields().all()) written(f.info.name.c_str());
     }
   }

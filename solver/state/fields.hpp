@@ -28,6 +28,7 @@ struct FieldHandle {
   std::size_t element_bytes = 0;
   std::function<void(std::vector<unsigned char>&)> to_host_bytes;
   std::function<void(const std::vector<unsigned char>&)> from_host_bytes;  // size = n * element_bytes
+  std::function<void*()> data;  // the array in the backend's memory
 };
 
 class FieldRegistry {

@@ -188,6 +188,7 @@ class ParticleState {
       for (std::size_t k = 0; k < out.size(); ++k) out[k] = static_cast<double>(raw[k]);
     };
     h.element_bytes = sizeof(T);
+    h.data = [&arr]() -> void* { return arr.data(); };
     h.to_host_bytes = [&arr](std::vector<unsigned char>& out) {
       out.resize(arr.size() * sizeof(T));
       if (!out.empty()) B::download(out.data(), arr.data(), out.size());
