@@ -12,7 +12,7 @@ mode=${1:-}
 
 build=(build-essential cmake ninja-build libomp-dev
        libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
-       libgtest-dev libbenchmark-dev libtiff-dev)
+       libgtest-dev libbenchmark-dev libtiff-dev procps)  # procps: the tests signal runs by name (pgrep, pkill)
 # ParaView: its CMake package needs its Python modules and the -dev packages its exported
 # targets name (MPI, GLEW, NetCDF, HDF5); OpenMPI (libopenmpi-dev, with mpirun) also runs one case
 # over many processes; Xvfb renders headless, ffmpeg assembles MP4s, matplotlib
