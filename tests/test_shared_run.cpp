@@ -19,15 +19,9 @@ using namespace psph;
 
 namespace {
 
-constexpr double kTrue = 1e300;
-
-// An embedded case with dotted keys set to numbers (the value 1e300 sets `true`).
-Case embedded(const std::string& name, const std::vector<std::pair<std::string, double>>& overrides) {
-  toml::table t = toml::parse(embedded_case_text(name));
-  for (const auto& [k, v] : overrides)
-    if (v == kTrue) set_case_value(t, k, toml::value<bool>(true));
-    else set_case_value(t, k, toml::value<double>(v));
-  Case c = parse_case(t, name);
+// An embedded case with `--set KEY=VALUE` overrides, its particles built.
+Case embedded(const std::string& name, const std::vector<std::string>& sets = {}) {
+  Case c = load_case_text(embedded_case_text(name), name, sets);
   build_particles(c);
   return c;
 }
@@ -58,14 +52,7 @@ std::string first_difference(Engine& shared, Engine* alone) {
   return "";
 }
 
-SharingStats expect_one_process_numbers(const Case& c, int steps);
-
 // Returns the shared run's statistics.
-SharingStats expect_one_process_numbers(const std::string& name,
-                                        const std::vector<std::pair<std::string, double>>& overrides, int steps) {
-  return expect_one_process_numbers(embedded(name, overrides), steps);
-}
-
 SharingStats expect_one_process_numbers(const Case& c, int steps) {
   const std::string& name = c.name;
   Communicator& comm = world();
@@ -88,42 +75,41 @@ SharingStats expect_one_process_numbers(const Case& c, int steps) {
 
 }  // namespace
 
-TEST(SharedRun, FluidWithWallsAndAPeriodicAxis) { expect_one_process_numbers("poiseuille_2d", {}, 200); }
+TEST(SharedRun, FluidWithWallsAndAPeriodicAxis) { expect_one_process_numbers(embedded("poiseuille_2d"), 200); }
 
 TEST(SharedRun, FreeSurfaceIn3D) {
-  expect_one_process_numbers("dam_break_3d", {{"discretisation.spacing", 0.04}}, 60);
+  expect_one_process_numbers(embedded("dam_break_3d", {"discretisation.spacing=0.04"}), 60);
 }
 
 TEST(SharedRun, ImplicitViscosity) {
-  expect_one_process_numbers("poiseuille_2d", {{"solver.implicit_viscosity", kTrue}}, 100);
+  expect_one_process_numbers(embedded("poiseuille_2d", {"solver.implicit_viscosity=true"}), 100);
 }
 
-TEST(SharedRun, RigidBodiesInAFluid) { expect_one_process_numbers("settling_cylinder_2d", {}, 100); }
+TEST(SharedRun, RigidBodiesInAFluid) { expect_one_process_numbers(embedded("settling_cylinder_2d"), 100); }
 
-TEST(SharedRun, RigidBodyAlone3D) { expect_one_process_numbers("rigid_top_3d", {}, 100); }
+TEST(SharedRun, RigidBodyAlone3D) { expect_one_process_numbers(embedded("rigid_top_3d"), 100); }
 
 // Buffers 1.3 mm thick in a 3 mm channel: on three processes their mirror points lie beyond the
 // lists' radius from the box of the process that holds the buffer particle.
 TEST(SharedRun, OpenBoundaries) {
-  expect_one_process_numbers("open_channel_2d", {{"open_boundary.thickness", 1.3e-3}}, 100);
+  expect_one_process_numbers(embedded("open_channel_2d", {"open_boundary.thickness=1.3e-3"}), 100);
 }
 
-TEST(SharedRun, ElasticRodBetweenClamps1D) { expect_one_process_numbers("vibrating_rod_1d", {}, 200); }
+TEST(SharedRun, ElasticRodBetweenClamps1D) { expect_one_process_numbers(embedded("vibrating_rod_1d"), 200); }
 
-TEST(SharedRun, ClampedCantileverPlate2D) { expect_one_process_numbers("oscillating_plate_2d", {}, 200); }
+TEST(SharedRun, ClampedCantileverPlate2D) { expect_one_process_numbers(embedded("oscillating_plate_2d"), 200); }
 
-TEST(SharedRun, DamageAroundARigidInclusion) { expect_one_process_numbers("plate_inclusion_2d", {}, 60); }
+TEST(SharedRun, DamageAroundARigidInclusion) { expect_one_process_numbers(embedded("plate_inclusion_2d"), 60); }
 
-TEST(SharedRun, FluidInAnElasticRing) { expect_one_process_numbers("lame_cylinder_2d", {}, 100); }
+TEST(SharedRun, FluidInAnElasticRing) { expect_one_process_numbers(embedded("lame_cylinder_2d"), 100); }
 
 // The claystone drainage cell's CI crop (validation/claystone_drainage.cpp): gas, water, a damaging
 // clay and its sleeve, 21,504 particles.
 TEST(SharedRun, ClaystoneCrop) {
-  Case c = load_case_text(embedded_case_text("claystone_drainage"), "claystone_drainage",
-                          {"sample.image.crop.lower=[16, 12, 30]", "sample.image.crop.upper=[32, 36, 50]",
-                           "sample.reservoir_height=8e-8", "sample.drive_ramp=5e-5"});
-  build_particles(c);
-  expect_one_process_numbers(c, 12);
+  expect_one_process_numbers(embedded("claystone_drainage", {"sample.image.crop.lower=[16, 12, 30]",
+                                                            "sample.image.crop.upper=[32, 36, 50]",
+                                                            "sample.reservoir_height=8e-8", "sample.drive_ramp=5e-5"}),
+                             12);
 }
 
 // The checkpoint of a shared run is one process's, byte for byte; it restarts on another number of
@@ -131,7 +117,7 @@ TEST(SharedRun, ClaystoneCrop) {
 // the uninterrupted one.
 TEST(SharedRun, CheckpointsRestartOnAnyNumberOfProcesses) {
   Communicator& comm = world();
-  const Case c = embedded("sessile_drop_2d", {});
+  const Case c = embedded("sessile_drop_2d");
   auto shared = make_cpu_engine(c.scene, comm);
   Communicator one;
   std::unique_ptr<Engine> alone = comm.rank() == 0 ? make_cpu_engine(c.scene, one) : nullptr;
@@ -159,12 +145,13 @@ TEST(SharedRun, CheckpointsRestartOnAnyNumberOfProcesses) {
   if (alone) EXPECT_EQ(first_difference(*resumed_alone, alone.get()), "");
 }
 
-TEST(SharedRun, TwoPhasesWithWetting) { expect_one_process_numbers("sessile_drop_2d", {}, 80); }
+TEST(SharedRun, TwoPhasesWithWetting) { expect_one_process_numbers(embedded("sessile_drop_2d"), 80); }
 
 // The domain cut anew at every list build (solver.rebalance_imbalance = 1): particles migrate
 // between other boxes, and no number changes.
 TEST(SharedRun, CutAnewAtEveryListBuild) {
-  const SharingStats s = expect_one_process_numbers("sessile_drop_2d", {{"solver.rebalance_imbalance", 1.0}}, 80);
+  const SharingStats s =
+      expect_one_process_numbers(embedded("sessile_drop_2d", {"solver.rebalance_imbalance=1.0"}), 80);
   EXPECT_GT(s.rebalances, 0);
   EXPECT_GT(s.halo_particles, 0);
 }
@@ -174,7 +161,8 @@ TEST(SharedRun, CutAnewAtEveryListBuild) {
 TEST(SharedRun, ProcessesWithoutParticles) {
   Communicator& comm = world();
   ShearBox b;
-  b.dimension = 2, b.per_axis = 8, b.length = 1, b.density = 1, b.viscosity = 1e-2, b.sound_speed = 10, b.amplitude = 0.1;
+  b.dimension = 2, b.per_axis = 8, b.length = 1;
+  b.density = 1, b.viscosity = 1e-2, b.sound_speed = 10, b.amplitude = 0.1;
   Scene sc = shear_box_scene(b);
   const int keep = comm.size() - 1;  // particles 0 .. keep - 1 (neighbours along x)
   sc.x.resize(std::size_t(keep) * 2), sc.v.resize(std::size_t(keep) * 2);

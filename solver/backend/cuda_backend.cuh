@@ -174,6 +174,20 @@ struct CudaBackend {
     if (bytes) PSPH_CUDA(cudaMemset(dst, 0, bytes));
   }
   static void synchronize() { PSPH_CUDA(cudaDeviceSynchronize()); }
+  // Device memory for the backend's own launches (reductions, the sort's keys), slot by slot: grown
+  // as needed and kept, so that a reduction allocates nothing.
+  enum Scratch { kSumWords, kSumSpecial, kSortKeys, kScratchSlots };
+  static void* scratch(Scratch slot, std::size_t bytes) {
+    static void* block[kScratchSlots] = {};
+    static std::size_t capacity[kScratchSlots] = {};
+    if (bytes > capacity[slot]) {
+      release(block[slot]);
+      block[slot] = nullptr, capacity[slot] = 0;
+      block[slot] = allocate(bytes);
+      capacity[slot] = bytes;
+    }
+    return block[slot];
+  }
   static int threads() { return 1; }
   static std::string device_name() {
     int dev = 0;
@@ -205,18 +219,14 @@ struct CudaBackend {
     constexpr int threads = 128, count = RealComponents<T>::count;
     const int blocks = std::min(256, (n + threads - 1) / threads);
     const std::size_t words = std::size_t(blocks) * count * ExactSum::kDigits;
-    std::int64_t* d_words = static_cast<std::int64_t*>(allocate(words * sizeof(std::int64_t)));
-    int* d_special = static_cast<int*>(allocate(std::size_t(blocks) * count * sizeof(int)));
+    auto* d_words = static_cast<std::int64_t*>(scratch(kSumWords, words * sizeof(std::int64_t)));
+    auto* d_special = static_cast<int*>(scratch(kSumSpecial, std::size_t(blocks) * count * sizeof(int)));
     accumulate_kernel<T, F, threads><<<blocks, threads>>>(n, f, d_words, d_special);
-    const cudaError_t launched = cudaGetLastError();
+    PSPH_CUDA(cudaGetLastError());
     std::vector<std::int64_t> h_words(words);
     std::vector<int> h_special(std::size_t(blocks) * count);
-    if (launched == cudaSuccess) {
-      download(h_words.data(), d_words, words * sizeof(std::int64_t));
-      download(h_special.data(), d_special, h_special.size() * sizeof(int));
-    }
-    release(d_words), release(d_special);
-    PSPH_CUDA(launched);
+    download(h_words.data(), d_words, words * sizeof(std::int64_t));
+    download(h_special.data(), d_special, h_special.size() * sizeof(int));
     for (int b = 0; b < blocks; ++b)
       for (int k = 0; k < count; ++k) {
         ExactSum part;
@@ -241,14 +251,13 @@ struct CudaBackend {
     fill_zero(cell_end, sizeof(int) * ncells);
     if (n == 0) return;
     const int grid = (n + block - 1) / block;
-    auto* key_id = static_cast<unsigned long long*>(allocate(sizeof(unsigned long long) * n));
+    auto* key_id = static_cast<unsigned long long*>(scratch(kSortKeys, sizeof(unsigned long long) * n));
     key_id_kernel<<<grid, block>>>(keys, ids, n, key_id);
     thrust::device_ptr<unsigned long long> k(key_id);
     thrust::device_ptr<int> p(perm);
     thrust::sequence(thrust::device, p, p + n);
     thrust::sort_by_key(thrust::device, k, k + n, p);
     cell_of_key_kernel<<<grid, block>>>(key_id, n, keys);
-    release(key_id);
     cell_ranges_kernel<<<grid, block>>>(keys, n, cell_start, cell_end);
     PSPH_CUDA(cudaGetLastError());
   }

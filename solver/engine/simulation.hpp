@@ -226,7 +226,7 @@ class Simulation final : public Engine {
   // again (parallel/particle_domain.hpp).
   void rebuild(bool every_particle = false) {
     damage_.retire_ghosts(cx_);  // the damage ghosts leave the lists (damage/ghosts.hpp)
-    if (domain_ && planned_) domain_->redistribute(cx_.s, rebalance_costs());
+    if (domain_) domain_->redistribute(cx_.s, rebalance_costs());
     cx_.neighbours.build(cx_.s, cx_.grid, cx_.mats, cx_.list_needs(), every_particle);
     if (domain_) plan_halo(), cx_.halo_fresh();
     elastic_.lists_built(cx_);
@@ -241,7 +241,6 @@ class Simulation final : public Engine {
   void share_out(const Scene& sc);
   void plan_halo();
   std::vector<double> particle_costs() const;
-  void check_clamp_partners();
   std::vector<double> rebalance_costs();
   std::vector<long long> output_order() const;
   std::vector<std::uint8_t> owned_flags() const;
@@ -256,7 +255,6 @@ class Simulation final : public Engine {
   SolverOptions opt_;
   Communicator& comm_;
   std::unique_ptr<ParticleDomain<D, B>> domain_;  // a run shared out over processes only
-  bool planned_ = false;
   int particles_ = 0;  // of the whole run
   double halo_width_ = 0;
   double busy_ = 0;    // seconds in step() since the last list build

@@ -80,26 +80,16 @@ std::vector<double> Simulation<D, B>::particle_costs() const {
 template <int D, class B>
 void Simulation<D, B>::plan_halo() {
   domain_->plan(cx_.s);
-  planned_ = true;
   particles_ = int(comm_.sum(static_cast<long long>(domain_->owned_count())));
   sharing_.processes = comm_.size();
   sharing_.halo_particles = comm_.sum(static_cast<long long>(domain_->halo_count()));
-  if (cx_.elastic && cx_.walls) check_clamp_partners();
-}
-
-// Every clamp partner of a particle this process owns is here (the halo is wide enough for it
-// unless the solid moved by far more than small strain allows): otherwise an error naming it.
-template <int D, class B>
-void Simulation<D, B>::check_clamp_partners() {
-  const std::vector<std::int32_t> mirror = cx_.s.mirror.host(), id = cx_.s.id.host(), index = cx_.s.index_of_id.host();
-  const std::vector<std::uint8_t> own = owned_flags();
-  std::string missing;
-  for (std::size_t i = 0; i < id.size() && missing.empty(); ++i)
-    if (own[i] && mirror[i] >= 0 && index[std::size_t(mirror[i])] < 0)
-      missing = "the clamp partner " + std::to_string(mirror[i]) + " of particle " + std::to_string(id[i]) +
-                " is not within the halo of process " + std::to_string(comm_.rank());
-  const std::string any = from_owner(missing);
-  if (!any.empty()) throw InstabilityError(any + when());
+  // Every clamp partner of an owned particle is here (the halo is wide enough for it unless the
+  // solid moved by far more than small strain allows): otherwise an error naming the particle.
+  if (!(cx_.elastic && cx_.walls)) return;
+  const int missing = cx_.template max_of<int>(MissingClampPartner<D>{cx_.view()});
+  if (missing >= 0)
+    throw InstabilityError("the clamp partner of particle " + std::to_string(missing) +
+                           " lies beyond the halo of the process that holds it" + when());
 }
 
 // At a list build: the slowest process's time in the steps since the last build over the mean.
@@ -322,7 +312,6 @@ void Simulation<D, B>::restore(const Checkpoint& c) {
   if (domain_) {  // every particle is here: this process keeps its share, cut anew
     cx_.s.set_count(n);
     domain_->split(cx_.s, particle_costs(), halo_width_);
-    planned_ = false;  // the share is new: the next list build plans its halo
   }
   rigid_.load(c);
   elastic_.load(c);

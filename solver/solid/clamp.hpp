@@ -29,6 +29,14 @@ PSPH_HD inline Vec<D> clamp_normal(const ParticleView<D>& s, int w, int p) {
   return d * (Real(1) / std::sqrt(dot(d, d)));
 }
 
+// The id of a particle whose clamp partner is not on this process (-1: none); a run over several
+// processes checks it after each list build.
+template <int D>
+struct MissingClampPartner {
+  ParticleView<D> s;
+  PSPH_HD int operator()(int i) const { return s.mirror[i] >= 0 && s.index_of_id[s.mirror[i]] < 0 ? int(s.id[i]) : -1; }
+};
+
 template <int D>
 struct ClampDisplacementPass {
   static constexpr FieldNames neighbour_reads = kSolidPairReads;
