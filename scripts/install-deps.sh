@@ -12,17 +12,20 @@ mode=${1:-}
 
 build=(build-essential cmake ninja-build libomp-dev
        libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
-       libgtest-dev libbenchmark-dev libtiff-dev procps)  # procps: the tests signal runs by name (pgrep, pkill)
+       libgtest-dev libbenchmark-dev libtiff-dev libhdf5-dev python3-h5py procps)
+# (procps: the tests signal runs by name, pgrep and pkill; python3-h5py: they read checkpoints as users do)
 # ParaView: its CMake package needs its Python modules and the -dev packages its exported
 # targets name (MPI, GLEW, NetCDF, HDF5); OpenMPI (libopenmpi-dev, with mpirun) also runs one case
-# over many processes; Xvfb renders headless, ffmpeg assembles MP4s, matplotlib
+# over many processes, which write their checkpoints together through OpenMPI's parallel HDF5;
+# Xvfb renders headless, ffmpeg assembles MP4s, matplotlib
 # draws `poresph report`'s plots.
-full=(paraview-dev python3-paraview libopenmpi-dev libglew-dev libnetcdf-dev libhdf5-dev libx11-dev
+full=(paraview-dev python3-paraview libopenmpi-dev libhdf5-openmpi-dev libglew-dev libnetcdf-dev libx11-dev
       libfreetype-dev libboost-dev libxml2-dev xvfb ffmpeg libcpp-httplib-dev chromium python3-matplotlib)
 # To run a built poresph: the libraries it links (ParaView's VTK comes with the paraview package;
 # OpenMPI's library and mpirun, for runs over several processes), the pipelines' ParaView Python
 # modules, Xvfb, ffmpeg, matplotlib.
-runtime=(libgomp1 libtomlplusplus3 libtiff6 libcpp-httplib0.11 libopenmpi3 openmpi-bin paraview python3-paraview
+runtime=(libgomp1 libtomlplusplus3 libtiff6 libcpp-httplib0.11 libopenmpi3 openmpi-bin libhdf5-openmpi-103-1 libhdf5-103-1
+         paraview python3-paraview
          xvfb ffmpeg python3-matplotlib)
 case $mode in
   --minimal) pkgs=("${build[@]}") ;;

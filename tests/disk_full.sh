@@ -37,7 +37,7 @@ if [ "$mode" = ulimit ]; then
   echo "exit 5 at the first checkpoint under a file-size limit: $(grep -m1 'write failed' out.txt)"
   exit 0
 fi
-ls full/run/checkpoints/step_*.ckpt > /dev/null 2>&1 || fail "no checkpoint was written before the disk filled"
+ls full/run/checkpoints/step_*.h5 > /dev/null 2>&1 || fail "no checkpoint was written before the disk filled"
 # A disk full before the run begins: exit 5 and no run directory left.
 mkdir -p tiny && mount -t tmpfs -o size=8k tmpfs tiny || fail "cannot mount the small tmpfs"
 "$poresph" run case.toml --out tiny/run --quiet > tiny.txt 2>&1

@@ -1,7 +1,8 @@
 #!/bin/bash
 # `mpirun -n N poresph run` through the real binary: on 2 and 3 processes the run directory holds
-# exactly the monitors, extracts and checkpoints of one process; a checkpoint of one process
-# restarts on three and ends as the uninterrupted run; SIGTERM ends every process with a final
+# exactly the monitors, extracts and checkpoints of one process (the HDF5 checkpoints compared and
+# read by h5py: tests/checkpoint_h5py.py); a checkpoint of one process restarts on three, one of
+# three on two, and both end as the uninterrupted run; SIGTERM ends every process with a final
 # checkpoint (exit 130); a process killed with SIGKILL ends the job without a hang;
 # a case that cannot be shared out yet is refused once, before any work, with nothing left behind.
 # Usage: shared_run_cli.sh PORESPH MPIEXEC SRC WORK
@@ -9,6 +10,7 @@ set -u
 poresph=$(realpath "$1") mpiexec=$2 src=$(realpath "$3") work=$4
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 fail() { echo "shared run: $*" >&2; exit 1; }
+h5py() { /usr/bin/python3 "$src/tests/checkpoint_h5py.py" "$@" || fail "h5py $1 ${*:2}"; }
 export OMP_NUM_THREADS=1 OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_mpi_yield_when_idle=1
 
 sed 's/^end = 0.5/end = 0.02/' "$src/cases/poiseuille_2d.toml" > short.toml
@@ -17,9 +19,11 @@ sed 's/^end = 0.5/end = 1000.0/' "$src/cases/poiseuille_2d.toml" > endless.toml
 
 same_run() {  # the run directories $1 and $2 hold the same numbers
   cmp -s "$1/monitors.csv" "$2/monitors.csv" || fail "$2/monitors.csv differs from $1's"
-  for f in "$1"/checkpoints/*.ckpt "$1"/extracts/*.vtp "$1"/extracts/particles.pvd; do
+  for f in "$1"/extracts/*.vtp "$1"/extracts/particles.pvd; do
     cmp -s "$f" "$2/${f#$1/}" || fail "$2/${f#$1/} differs from $1's"
   done
+  [ "$(ls "$1/checkpoints")" = "$(ls "$2/checkpoints")" ] || fail "$2 has other checkpoints than $1"
+  for f in "$1"/checkpoints/*.h5; do h5py same "$f" "$2/${f#$1/}"; done
 }
 
 "$poresph" run longer.toml --out one --quiet > /dev/null || fail "the one-process run failed"
@@ -29,12 +33,16 @@ for n in 2 3; do
   [ "$(grep -c '"particles": 208' shared$n/summary.json)" = 1 ] || fail "summary.json of $n processes: $(cat shared$n/summary.json)"
   [ "$(grep -c '^poresph run' shared$n/log.txt)" = 1 ] || fail "log.txt of $n processes is not written once"
 done
+h5py check "shared3/checkpoints/$(ls shared3/checkpoints | tail -1)" > /dev/null
 
-# One process's checkpoint at t = 0.02, continued on three.
+# One process's checkpoint at t = 0.02 continued on three; three processes' continued on two.
+last=$(ls one/checkpoints | tail -1)
 "$poresph" run short.toml --out first --quiet > /dev/null || fail "the short run failed"
 "$mpiexec" -n 3 "$poresph" run longer.toml --restart first --out resumed --quiet > /dev/null || fail "the restart on 3 processes failed"
-last=$(ls one/checkpoints | tail -1)
-cmp -s "one/checkpoints/$last" "resumed/checkpoints/$last" || fail "the restart on 3 processes ends elsewhere than the uninterrupted run"
+h5py same "one/checkpoints/$last" "resumed/checkpoints/$last"
+"$mpiexec" -n 3 "$poresph" run short.toml --out first3 --quiet > /dev/null || fail "the short run on 3 processes failed"
+"$mpiexec" -n 2 "$poresph" run longer.toml --restart first3 --out resumed2 --quiet > /dev/null || fail "the restart on 2 processes failed"
+h5py same "one/checkpoints/$last" "resumed2/checkpoints/$last"
 
 # SIGTERM: a final checkpoint from every process and exit 130, sent to the processes (as a batch
 # system's scancel does) or to the launcher, which forwards it (OpenMPI's mpirun then exits 1
@@ -49,7 +57,7 @@ interrupt() {  # name, whom to signal (launcher or processes), expected launcher
   rc=$?
   [ $rc = "$3" ] || fail "SIGTERM to the $2: exit $rc, expected $3: $(cat "$1.out")"
   grep -q '"status": "interrupted"' "$1/summary.json" || fail "SIGTERM to the $2: $(cat "$1/summary.json")"
-  ls "$1"/checkpoints/*.ckpt > /dev/null 2>&1 || fail "SIGTERM to the $2: no final checkpoint"
+  ls "$1"/checkpoints/*.h5 > /dev/null 2>&1 || fail "SIGTERM to the $2: no final checkpoint"
 }
 interrupt stopped processes 130
 interrupt stopped_launcher launcher 1
@@ -64,6 +72,27 @@ kill -KILL "$victim"
 for _ in $(seq 300); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
 if kill -0 $pid 2>/dev/null; then kill -KILL $pid; fail "SIGKILL: the job still runs 30 s after one process was killed"; fi
 wait $pid && fail "SIGKILL: the job exited 0"
+
+# A full disk (a 160 kB file system of the test's own, where user namespaces allow one): exit 5
+# from every process, the file and the reason said, no half-written checkpoint, the kept ones whole.
+full_disk() {
+  mkdir -p full && mount -t tmpfs -o size=160k tmpfs full || fail "full disk: cannot mount the tmpfs"
+  "$mpiexec" -n 2 "$poresph" run many.toml --out full/run --quiet > full.out 2>&1
+  local rc=$?
+  [ $rc = 5 ] || fail "full disk: exit $rc, expected 5: $(cat full.out)"
+  grep -q "write failed: .*checkpoints/step_.*No space left on device" full.out || fail "full disk: $(cat full.out)"
+  [ -z "$(find full/run -name '*.partial')" ] || fail "full disk: half-written files left behind"
+  ls full/run/checkpoints/*.h5 > /dev/null 2>&1 || fail "full disk: no checkpoint kept"
+  for f in full/run/checkpoints/*.h5; do h5py check "$f" > /dev/null; done
+}
+if unshare -rm true 2>/dev/null; then
+  sed -e 's/^monitor_interval = .*/monitor_interval = 0.001\ncheckpoint_keep = 100/' short.toml > many.toml
+  export -f full_disk fail h5py
+  export poresph mpiexec src
+  unshare -rm bash -c full_disk || exit 1
+else
+  echo "no user namespaces here: the full-disk case did not run"
+fi
 
 # Refused once, before any work: a case with a large-strain solid (not shared out yet).
 "$mpiexec" -n 2 "$poresph" run "$src/cases/softening_bar_2d.toml" --out refused > refused.out 2>&1

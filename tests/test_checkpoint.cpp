@@ -77,6 +77,54 @@ TEST(Checkpoint, RestoredRunContinuesBitwise) {
   }
 }
 
+// Checkpoints written before the HDF5 format (the raw one) still restart, bitwise.
+TEST(Checkpoint, TheRawFormatStillRestarts) {
+  Case c = embedded("settling_cylinder_2d");
+  auto a = make_cpu_engine(c.scene);
+  for (int s = 0; s < 20; ++s) a->step(1e9);
+  const std::string file = temp_file("psph_ck_raw.ckpt");
+  write_raw_checkpoint_file(file, a->checkpoint(), c.name);
+  std::string head(20, ' ');
+  std::ifstream(file).read(head.data(), 20);
+  EXPECT_EQ(head, "PORESPH-CHECKPOINT 1");
+  for (int s = 0; s < 25; ++s) a->step(1e9);
+  auto b = make_cpu_engine(c.scene);
+  b->restore(read_checkpoint_file(file));
+  for (int s = 0; s < 25; ++s) b->step(1e9);
+  EXPECT_EQ(state(*a), state(*b));
+  fs::remove(file);
+}
+
+#ifdef PORESPH_HAVE_HDF5_TESTS
+// The HDF5 file keeps each field's type, components and unit, the clock, the stages' extras and
+// the resolved case; its partial file is gone.
+TEST(Checkpoint, Hdf5KeepsFieldsWithTheirUnits) {
+  Case c = embedded("settling_cylinder_2d");
+  auto a = make_cpu_engine(c.scene);
+  for (int s = 0; s < 10; ++s) a->step(1e9);
+  const Checkpoint ck = a->checkpoint();
+  const std::string file = temp_file("psph_ck_units.h5");
+  Communicator one;
+  write_checkpoint_file(file, ck, CheckpointOrigin{c.name, "[case]\nname = 'x'\n"}, one);
+  EXPECT_FALSE(fs::exists(file + ".partial"));
+  const Checkpoint r = read_checkpoint_file(file);
+  EXPECT_EQ(r.steps, ck.steps);
+  EXPECT_EQ(r.time, ck.time);
+  EXPECT_EQ(r.rigid_bodies, ck.rigid_bodies);
+  EXPECT_FALSE(r.rigid_bodies.empty());
+  ASSERT_EQ(r.fields.size(), ck.fields.size());
+  for (std::size_t f = 0; f < ck.fields.size(); ++f) {
+    EXPECT_EQ(r.fields[f].name, ck.fields[f].name);
+    EXPECT_EQ(r.fields[f].unit, ck.fields[f].unit) << ck.fields[f].name;
+    EXPECT_EQ(r.fields[f].components, ck.fields[f].components) << ck.fields[f].name;
+    EXPECT_TRUE(r.fields[f].type == ck.fields[f].type) << ck.fields[f].name;
+    EXPECT_TRUE(r.fields[f].bytes == ck.fields[f].bytes) << ck.fields[f].name;
+  }
+  EXPECT_EQ(r.field("velocity")->unit, "m/s");
+  fs::remove(file);
+}
+#endif
+
 TEST(Checkpoint, RefusesAnotherScene) {
   Case c = embedded("poiseuille_2d");
   auto a = make_cpu_engine(c.scene);

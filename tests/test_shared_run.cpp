@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "engine/engine.hpp"
+#include "io/checkpoint_file.hpp"
 #include "parallel/communicator.hpp"
 #include "state/checkpoint.hpp"
 #include "scene/case_file.hpp"
@@ -16,6 +18,7 @@
 #include "scene/scene_builder.hpp"
 
 using namespace psph;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -125,7 +128,10 @@ TEST(SharedRun, CheckpointsRestartOnAnyNumberOfProcesses) {
     shared->step(1e30);
     if (alone) alone->step(1e30);
   }
-  const Checkpoint saved = shared->checkpoint();
+  // Every process writes its slice of one file (HDF5, collective), and every process reads it whole.
+  const std::string file = (fs::temp_directory_path() / ("psph_shared_" + std::to_string(comm.size()) + ".h5")).string();
+  write_checkpoint_file(file, shared->checkpoint(), CheckpointOrigin{c.name, ""}, comm);
+  const Checkpoint saved = read_checkpoint_file(file);
   if (alone) {
     const Checkpoint ref = alone->checkpoint();
     ASSERT_EQ(saved.particles, ref.particles);
@@ -133,6 +139,8 @@ TEST(SharedRun, CheckpointsRestartOnAnyNumberOfProcesses) {
     for (std::size_t f = 0; f < ref.fields.size(); ++f)
       EXPECT_TRUE(saved.fields[f].bytes == ref.fields[f].bytes) << "checkpoint field " << ref.fields[f].name;
   }
+  comm.barrier();
+  if (comm.rank() == 0) fs::remove(file);
   auto resumed = make_cpu_engine(c.scene, comm);
   resumed->restore(saved);
   std::unique_ptr<Engine> resumed_alone = alone ? make_cpu_engine(c.scene, one) : nullptr;
@@ -180,6 +188,7 @@ TEST(SharedRun, ProcessesWithoutParticles) {
   EXPECT_EQ(first_difference(*shared, alone.get()), "");
   const Checkpoint saved = shared->checkpoint();
   EXPECT_EQ(saved.particles, keep);
+  EXPECT_EQ(comm.sum(static_cast<long long>(saved.fields[0].bytes.size() / saved.fields[0].element_bytes)), keep);
 }
 
 int main(int argc, char** argv) {

@@ -90,7 +90,7 @@ int RunDriver::open() {
     return refuse("--serve: this poresph was built without the dashboard (cpp-httplib was not found at build time)");
   dir_ = opt_.out.empty() ? default_run_directory(c_.name) : opt_.out;
   if (!root()) {  // another process of a shared run: the first one writes
-    rd_ = std::make_unique<RunDirectory>();
+    rd_ = std::make_unique<RunDirectory>(RunDirectory::follower(dir_, c_.source_text));
     return 0;
   }
   try {
@@ -126,7 +126,7 @@ Checkpoint RunDriver::restart_checkpoint() {
   for (const auto& f : r.removed) restart_notes_.push_back("removed " + f + " (a checkpoint write cut short)");
   for (const auto& why : r.skipped) restart_notes_.push_back("skipped a damaged checkpoint: " + why);
   if (r.path.empty())
-    throw CheckpointError(opt_.restart + ": no intact checkpoint (checkpoints/step_*.ckpt) in this directory" +
+    throw CheckpointError(opt_.restart + ": no intact checkpoint (checkpoints/step_*.h5 or .ckpt) in this directory" +
                           (r.skipped.empty() ? "" : ": " + r.skipped.front()));
   restart_file_ = r.path;
   return std::move(r.data);
@@ -399,7 +399,7 @@ void RunDriver::monitor() {
 void RunDriver::checkpoint() {
   if (engine_->steps() == last_checkpoint_step_) return;
   last_checkpoint_step_ = engine_->steps();
-  const std::string file = rd_->save_checkpoint(*engine_, c_.name, c_.output.checkpoint_keep);
+  const std::string file = rd_->save_checkpoint(*engine_, c_.name, c_.output.checkpoint_keep, comm_);
   log("checkpoint " + file);
 }
 

@@ -55,7 +55,8 @@ class Engine {
   virtual std::string device() const = 0;
   // Mean number of neighbours (r < support) per fluid or elastic particle.
   virtual double mean_neighbours() = 0;
-  // The whole state, for a restart. Rebuilds the neighbour lists first (see state/checkpoint.hpp).
+  // The whole state, for a restart (see state/checkpoint.hpp); over several processes, this
+  // process's slice of it (every process calls). Rebuilds the neighbour lists first.
   virtual Checkpoint checkpoint() = 0;
   // Continues from a checkpoint of the same scene; throws std::invalid_argument naming what differs.
   virtual void restore(const Checkpoint& c) = 0;

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "engine/simulation.hpp"
+#include "parallel/order_slices.hpp"
 
 namespace psph {
 
@@ -274,14 +275,18 @@ Checkpoint Simulation<D, B>::checkpoint() {
   c.time = t_, c.last_dt = dt_, c.first_dt = dt_first_, c.steps = steps_;
   elastic_.save(c);
   rigid_.save(c);
-  // A run over several processes gathers the fields in one process's particle order: the very
-  // checkpoint of one process, which restarts on any number of them.
-  const std::vector<long long> order = domain_ ? output_order() : std::vector<long long>{};
-  if (domain_) c.particles = particles_;
+  // Over several processes each holds a slice of one process's particle order: written together,
+  // the very checkpoint of one process, which restarts on any number of them.
+  std::unique_ptr<OrderSlices> slices;
+  if (domain_) {
+    slices = std::make_unique<OrderSlices>(comm_, output_order(), owned_flags());
+    c.particles = particles_, c.first = slices->first();
+  }
   for (const auto& f : cx_.s.fields().all()) {
-    c.fields.push_back(CheckpointField{f.info.name, f.element_bytes, {}});
+    const FieldInfo& i = f.info;
+    c.fields.push_back(CheckpointField{i.name, f.element_bytes, {}, i.type, i.components, i.unit, i.description});
     f.to_host_bytes(c.fields.back().bytes);
-    if (domain_) c.fields.back().bytes = domain_->gather(c.fields.back().bytes, f.element_bytes, order);
+    if (slices) c.fields.back().bytes = slices->slice(c.fields.back().bytes, f.element_bytes);
   }
   return c;
 }
@@ -293,6 +298,7 @@ void Simulation<D, B>::restore(const Checkpoint& c) {
     throw std::invalid_argument("the checkpoint " + what + " (" + theirs + ") differs from the case's (" + ours + ")");
   };
   const int n = particles();
+  if (!c.whole()) throw std::logic_error("restore: a slice of a checkpoint, not the whole of it");
   if (c.dimension != D) differs("dimension", std::to_string(D), std::to_string(c.dimension));
   if (c.particles != n) differs("particle count", std::to_string(n), std::to_string(c.particles));
   if (c.precision != precision_name()) differs("precision", precision_name(), c.precision);

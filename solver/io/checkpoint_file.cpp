@@ -8,14 +8,43 @@
 #include <nlohmann/json.hpp>
 
 #include "io/durable_file.hpp"
+#ifdef PORESPH_HAVE_HDF5
+#include "io/checkpoint_hdf5.hpp"
+#endif
 
 namespace psph {
 namespace fs = std::filesystem;
 namespace {
 constexpr const char* kMagic = "PORESPH-CHECKPOINT 1";
+constexpr char kHdf5Signature[8] = {'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};
+
+Checkpoint read_raw_checkpoint_file(const std::string& path);
+}  // namespace
+
+const char* checkpoint_extension() {
+#ifdef PORESPH_HAVE_HDF5
+  return ".h5";
+#else
+  return ".ckpt";
+#endif
+}
+
+void write_checkpoint_file(const std::string& path, const Checkpoint& c, const CheckpointOrigin& o, Communicator& comm) {
+#ifdef PORESPH_HAVE_HDF5
+  write_hdf5_checkpoint(path, c, o, comm);
+#else
+  if (comm.parallel()) throw std::logic_error("a checkpoint over several processes needs HDF5");
+  write_raw_checkpoint_file(path, c, o.case_name);
+#endif
 }
 
 void write_checkpoint_file(const std::string& path, const Checkpoint& c, const std::string& case_name) {
+  Communicator one;
+  write_checkpoint_file(path, c, CheckpointOrigin{case_name, ""}, one);
+}
+
+void write_raw_checkpoint_file(const std::string& path, const Checkpoint& c, const std::string& case_name) {
+  if (!c.whole()) throw std::logic_error("the raw checkpoint format holds whole checkpoints only");
   nlohmann::json head = {{"case", case_name},   {"dimension", c.dimension}, {"particles", c.particles},
                          {"precision", c.precision}, {"time", c.time},      {"last_dt", c.last_dt},
                          {"first_dt", c.first_dt},   {"steps", c.steps},     {"dissipated_energy", c.dissipated_energy},
@@ -29,11 +58,27 @@ void write_checkpoint_file(const std::string& path, const Checkpoint& c, const s
 }
 
 Checkpoint read_checkpoint_file(const std::string& path) {
+  char head[sizeof kHdf5Signature] = {};
+  std::ifstream(path, std::ios::binary).read(head, sizeof head);
+  if (std::equal(head, head + sizeof head, kHdf5Signature)) {
+#ifdef PORESPH_HAVE_HDF5
+    return read_hdf5_checkpoint(path);
+#else
+    throw CheckpointError(path + ": an HDF5 checkpoint, and this poresph was built without HDF5 (scripts/install-deps.sh)");
+#endif
+  }
+  return read_raw_checkpoint_file(path);
+}
+
+namespace {
+
+Checkpoint read_raw_checkpoint_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw CheckpointError(path + ": cannot open the checkpoint file");
   std::string magic, line;
   std::getline(in, magic);
-  if (magic != kMagic) throw CheckpointError(path + ": not a poresph checkpoint (expected a first line '" + kMagic + "')");
+  if (magic != kMagic)
+    throw CheckpointError(path + ": not a poresph checkpoint (expected an HDF5 file or a first line '" + kMagic + "')");
   std::getline(in, line);
   Checkpoint c;
   nlohmann::json head;
@@ -67,24 +112,24 @@ Checkpoint read_checkpoint_file(const std::string& path) {
   return c;
 }
 
-namespace {
-
 fs::path checkpoint_folder(const std::string& dir) {
   fs::path d(dir);
   return fs::is_directory(d / "checkpoints") ? d / "checkpoints" : d;
 }
 
-// step_<zero-padded step>.ckpt, newest (highest step) first.
+// step_<zero-padded step>.h5 or .ckpt, newest (highest step) first.
 std::vector<std::string> checkpoints_newest_first(const fs::path& d) {
-  std::vector<std::string> all;
+  std::vector<std::pair<std::string, std::string>> all;  // stem, path
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(d, ec)) {
-    const std::string name = e.path().filename().string();
-    if (e.is_regular_file() && name.rfind("step_", 0) == 0 && e.path().extension() == ".ckpt")
-      all.push_back(e.path().string());
+    const std::string name = e.path().filename().string(), ext = e.path().extension().string();
+    if (e.is_regular_file() && name.rfind("step_", 0) == 0 && (ext == ".h5" || ext == ".ckpt"))
+      all.emplace_back(e.path().stem().string(), e.path().string());
   }
   std::sort(all.rbegin(), all.rend());
-  return all;
+  std::vector<std::string> out;
+  for (const auto& a : all) out.push_back(a.second);
+  return out;
 }
 
 }  // namespace

@@ -57,6 +57,22 @@ void DurableFile::commit() {
   if (dir >= 0) ::fsync(dir), ::close(dir);
 }
 
+void publish_durably(const std::string& partial, const std::string& path) {
+  auto fail = [&](const std::string& what) {
+    const std::string reason = std::strerror(errno);
+    ::unlink(partial.c_str());
+    throw WriteError(path + ": " + what + ": " + reason);
+  };
+  const int fd = ::open(partial.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) fail("cannot open the finished file");
+  const bool synced = ::fsync(fd) == 0;
+  ::close(fd);
+  if (!synced) fail("flushing to the disk failed");
+  if (::rename(partial.c_str(), path.c_str()) != 0) fail("renaming the finished file failed");
+  const int dir = ::open(directory_of(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir >= 0) ::fsync(dir), ::close(dir);
+}
+
 namespace {
 void write_whole(const std::string& path, const std::string& text, bool sync) {
   DurableFile f(path, sync);

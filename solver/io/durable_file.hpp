@@ -33,6 +33,9 @@ class DurableFile {
   bool sync_;
 };
 
+// A file another writer finished at `partial` (a library that writes its own files), flushed to the
+// disk and renamed to `path`, durably; on failure `partial` is removed and a WriteError thrown.
+void publish_durably(const std::string& partial, const std::string& path);
 // The whole of `text` as PATH, durably.
 void write_file_durably(const std::string& path, const std::string& text);
 // The same, atomic and checked but not flushed to the disk.

@@ -14,7 +14,8 @@
 namespace psph {
 namespace fs = std::filesystem;
 
-RunDirectory::RunDirectory(const std::string& path, const std::string& resolved) : path_(path) {
+RunDirectory::RunDirectory(const std::string& path, const std::string& resolved)
+    : path_(path), resolved_(resolved), writes_(true) {
   std::error_code ec;
   if (fs::exists(path, ec) && !(fs::is_directory(path, ec) && fs::is_empty(path, ec)))
     throw std::runtime_error("--out " + path + ": the run directory exists and is not empty; choose another");
@@ -31,6 +32,12 @@ RunDirectory::RunDirectory(const std::string& path, const std::string& resolved)
     if (!existed) fs::remove_all(path, ec);
     throw;
   }
+}
+
+RunDirectory RunDirectory::follower(const std::string& path, const std::string& resolved) {
+  RunDirectory d;
+  d.path_ = path, d.resolved_ = resolved;
+  return d;
 }
 
 void RunDirectory::log(const std::string& line) {
@@ -67,17 +74,16 @@ void RunDirectory::write_summary(const nlohmann::json& j) const {
   write_file_durably(path_ + "/summary.json", j.dump(2) + "\n");
 }
 
-std::string RunDirectory::save_checkpoint(Engine& e, const std::string& case_name, int keep) {
+std::string RunDirectory::save_checkpoint(Engine& e, const std::string& case_name, int keep, Communicator& comm) {
   char name[40];
-  std::snprintf(name, sizeof name, "/step_%010ld.ckpt", e.steps());
-  const std::string file = path_ + "/checkpoints" + name;
-  const Checkpoint c = e.checkpoint();
-  if (!writes()) return "";
-  write_checkpoint_file(file, c, case_name);
+  std::snprintf(name, sizeof name, "/step_%010ld", e.steps());
+  const std::string file = path_ + "/checkpoints" + name + checkpoint_extension();
+  write_checkpoint_file(file, e.checkpoint(), CheckpointOrigin{case_name, resolved_}, comm);
+  if (!writes()) return file;
   std::set<std::string> all;  // zero-padded names sort by step
   std::error_code ec;
   for (const auto& f : fs::directory_iterator(path_ + "/checkpoints", ec))
-    if (f.path().extension() == ".ckpt") all.insert(f.path().string());
+    if (f.path().extension() == checkpoint_extension()) all.insert(f.path().string());
   while (keep > 0 && int(all.size()) > keep) {
     fs::remove(*all.begin(), ec);
     all.erase(all.begin());

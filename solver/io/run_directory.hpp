@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/engine.hpp"
+#include "parallel/communicator.hpp"
 
 namespace psph {
 
@@ -15,10 +16,10 @@ class RunDirectory {
  public:
   // Creates the directory (it must not exist or be empty) and writes the resolved case.
   RunDirectory(const std::string& path, const std::string& resolved_case_toml);
-  // The other processes of a run shared out over several (the first one writes): the engine's
-  // collective calls (statistics, checkpoint) are made, nothing is written.
-  RunDirectory() = default;
-  bool writes() const { return !path_.empty(); }
+  // The other processes of a run shared out over several: the first one writes, they make the
+  // engine's collective calls (statistics) and write their share of the checkpoints.
+  static RunDirectory follower(const std::string& path, const std::string& resolved_case_toml);
+  bool writes() const { return writes_; }
   const std::string& path() const { return path_; }
   std::string extracts() const { return path_ + "/extracts"; }
 
@@ -31,11 +32,14 @@ class RunDirectory {
   void monitor(Engine& e, const std::vector<MonitorValue>& extra = {});
   // The writes below throw a WriteError (io/durable_file.hpp) naming the file and the reason.
   void write_summary(const nlohmann::json& j) const;
-  // Writes checkpoints/step_<step>.ckpt and deletes the oldest beyond `keep`; returns its path.
-  std::string save_checkpoint(Engine& e, const std::string& case_name, int keep);
+  // Writes checkpoints/step_<step>.h5 (.ckpt without HDF5), every process its share, and deletes
+  // the oldest beyond `keep`; returns its path.
+  std::string save_checkpoint(Engine& e, const std::string& case_name, int keep, Communicator& comm);
 
  private:
-  std::string path_;
+  RunDirectory() = default;
+  std::string path_, resolved_;
+  bool writes_ = false;
   std::ofstream log_, monitors_;
   std::vector<std::string> extra_columns_;
   std::string write_failure_;

@@ -33,6 +33,9 @@ class Communicator {
   // Ends every process at once (a process that cannot continue alone): never returns.
   [[noreturn]] virtual void abort(int code);
   bool parallel() const { return size() > 1; }
+  // The MPI communicator (an MPI_Comm*) for libraries that take one (parallel HDF5, Catalyst);
+  // null for one process without MPI.
+  virtual const void* mpi_comm() const { return nullptr; }
   // Seconds spent in the calls above since the start (waiting for other processes included).
   virtual double seconds_in_calls() const { return 0; }
 };

@@ -41,7 +41,7 @@ class CallClock {
 
 class MpiCommunicator final : public Communicator {
  public:
-  MpiCommunicator() {
+  MpiCommunicator() : world_(MPI_COMM_WORLD) {
     int ready = 0, provided = 0;
     MPI_Initialized(&ready);
     if (!ready) check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
@@ -50,6 +50,7 @@ class MpiCommunicator final : public Communicator {
   }
   int rank() const override { return rank_; }
   int size() const override { return size_; }
+  const void* mpi_comm() const override { return &world_; }
 
   void sum(ExactSum* acc, int count) override {
     const CallClock clock(seconds_);
@@ -136,6 +137,7 @@ class MpiCommunicator final : public Communicator {
 
  private:
   int rank_ = 0, size_ = 1;
+  MPI_Comm world_;
   double seconds_ = 0;
 };
 

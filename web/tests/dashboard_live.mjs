@@ -162,7 +162,7 @@ try {
   const final = status();
   assert.equal(final.state, 'stopped');
   const ckpts = fs.readdirSync(path.join(out, 'checkpoints'));
-  assert.ok(ckpts.includes(`step_${String(final.step).padStart(10, '0')}.ckpt`), `no final checkpoint at step ${final.step}: ${ckpts}`);
+  assert.ok(ckpts.includes(`step_${String(final.step).padStart(10, '0')}.h5`), `no final checkpoint at step ${final.step}: ${ckpts}`);
   assert.equal(JSON.parse(fs.readFileSync(path.join(out, 'summary.json'), 'utf8')).status, 'stopped');
   assert.deepEqual(errors, []);
   console.log(`stopped at step ${final.step} with a checkpoint`);

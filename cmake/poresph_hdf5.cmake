@@ -1,0 +1,27 @@
+# HDF5 checkpoints (io/checkpoint_hdf5.hpp): OpenMPI's parallel HDF5 in a build with MPI (every
+# process writes its share of one file), the serial HDF5 without MPI; without HDF5 the raw
+# checkpoint format. A run over several processes writes its checkpoints together, so MPI without
+# parallel HDF5 builds for one process (AUTO) or stops (ON).
+set(PORESPH_HAVE_HDF5 OFF)
+if(PKG_CONFIG_FOUND)
+  if(PORESPH_HAVE_MPI)
+    pkg_check_modules(PSPH_HDF5 QUIET IMPORTED_TARGET hdf5-openmpi)
+    if(NOT PSPH_HDF5_FOUND)
+      if(PORESPH_MPI STREQUAL "ON")
+        message(FATAL_ERROR "PORESPH_MPI=ON needs OpenMPI's parallel HDF5 (libhdf5-openmpi-dev: scripts/install-deps.sh)")
+      endif()
+      message(STATUS "poresph: MPI found without parallel HDF5 (libhdf5-openmpi-dev): built for one process")
+      set(PORESPH_HAVE_MPI OFF)
+    endif()
+  endif()
+  if(NOT PORESPH_HAVE_MPI)
+    pkg_check_modules(PSPH_HDF5 QUIET IMPORTED_TARGET hdf5-serial)
+  endif()
+  if(PSPH_HDF5_FOUND)
+    set(PORESPH_HAVE_HDF5 ON)
+    message(STATUS "poresph: HDF5 ${PSPH_HDF5_VERSION} checkpoints")
+  endif()
+endif()
+if(NOT PORESPH_HAVE_HDF5)
+  message(STATUS "poresph: HDF5 not found: checkpoints in the raw format (scripts/install-deps.sh installs libhdf5-dev)")
+endif()
