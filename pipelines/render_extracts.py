@@ -8,7 +8,23 @@ $PORESPH_VIS_SETTINGS names the run's images/visualisation.json.
 import sys
 
 from paraview.catalyst import bridge
-from paraview.vtk.vtkIOXML import vtkXMLPolyDataReader
+from vtkmodules.vtkFiltersGeometry import vtkGeometryFilter
+from vtkmodules.vtkIOXML import vtkXMLGenericDataObjectReader
+
+
+def particles(path):
+    """An extract as the solver hands it to Catalyst: polydata of vertices (a .vtu, a .pvtp or a
+    .pvtu of a run over several processes read whole, its pieces in order)."""
+    reader = vtkXMLGenericDataObjectReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutputDataObject(0)
+    if data.IsA("vtkPolyData"):
+        return data
+    geometry = vtkGeometryFilter()
+    geometry.SetInputData(data)
+    geometry.Update()
+    return geometry.GetOutputDataObject(0)
 
 
 def main(list_file, scripts):
@@ -18,10 +34,7 @@ def main(list_file, scripts):
     for s in scripts:
         bridge.add_pipeline(s, 2)
     for k, (time, path) in enumerate(frames):
-        reader = vtkXMLPolyDataReader()
-        reader.SetFileName(path)
-        reader.Update()
-        bridge.coprocess(float(time), k, reader.GetOutputDataObject(0), name="particles")
+        bridge.coprocess(float(time), k, particles(path), name="particles")
     bridge.finalize()
 
 

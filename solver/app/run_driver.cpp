@@ -156,7 +156,7 @@ void RunDriver::plan_outputs() {
   const std::vector<std::string> have = engine_->field_names();
   for (const auto& f : insitu_->fields())
     if (std::count(fields.begin(), fields.end(), f) == 0 && std::count(have.begin(), have.end(), f)) fields.push_back(f);
-  writer_ = std::make_unique<ParticleWriter>(rd_->writes() ? rd_->extracts() : "", fields);
+  writer_ = std::make_unique<ParticleWriter>(rd_->extracts(), fields, comm_, c_.output.extract_format);
   const double t_end = c_.end_time, t = engine_->time();
   dt_mon_ = c_.output.monitor_interval > 0 ? c_.output.monitor_interval : t_end / 100;
   // With pipelines: a frame every visualisation.interval (default a fiftieth of the run), and

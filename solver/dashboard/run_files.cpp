@@ -14,7 +14,7 @@ namespace {
 const char* content_type_of(const fs::path& p) {
   const std::string e = p.extension().string();
   if (e == ".png") return "image/png";
-  if (e == ".vtp" || e == ".pvd") return "application/octet-stream";
+  if (e == ".vtp" || e == ".vtu" || e == ".pvtp" || e == ".pvtu" || e == ".pvd") return "application/octet-stream";
   if (e == ".csv") return "text/csv";
   if (e == ".json") return "application/json";
   return "text/plain; charset=utf-8";

@@ -177,7 +177,7 @@ void RunWatcher::poll_extracts() {
   const std::string text = read_file(fs::path(dir_) / "extracts" / "particles.pvd");
   if (text == pvd_text_) return;
   pvd_text_ = text;
-  static const std::regex entry(R"re(<DataSet\s+timestep="([^"]*)"\s+file="([^"/\\]*\.vtp)"\s*/>)re");
+  static const std::regex entry(R"re(<DataSet\s+timestep="([^"]*)"\s+file="([^"/\\]*\.p?vt[pu])"\s*/>)re");
   std::size_t index = 0;
   for (auto it = std::sregex_iterator(text.begin(), text.end(), entry); it != std::sregex_iterator(); ++it, ++index) {
     if (index < extracts_.size()) continue;

@@ -50,6 +50,9 @@ class Engine {
   virtual const DensityWatch& density_watch() const = 0;
   // A registered field by name, copied to the host, components interleaved.
   virtual std::vector<double> field(const std::string& name) = 0;
+  // Over several processes, this process's slice of field(name): consecutive particles of one
+  // process's order, the slices in process order (every process calls); one process: field(name).
+  virtual std::vector<double> field_slice(const std::string& name) { return field(name); }
   virtual std::vector<std::string> field_names() const = 0;
   virtual std::string backend() const = 0;
   virtual std::string device() const = 0;

@@ -19,6 +19,7 @@
 #include "rigid/rigid_stage.hpp"
 #include "engine/scene.hpp"
 #include "engine/clamp_partners.hpp"
+#include "parallel/order_slices.hpp"
 #include "parallel/particle_cost.hpp"
 #include "solid/coupling_stage.hpp"
 #include "solid/elastic_stage.hpp"
@@ -131,6 +132,18 @@ class Simulation final : public Engine {
     const std::vector<Material> materials(cx_.mats.m, cx_.mats.m + cx_.mats.count);
     return compute_derived_field(name, D, materials, [this](const std::string& src) { return field(src); });
   }
+  std::vector<double> field_slice(const std::string& name) override {
+    if (!domain_) return field(name);
+    elastic_.prepare_field(cx_, name, steps_);
+    if (!cx_.s.fields().has(name)) {
+      const std::vector<Material> materials(cx_.mats.m, cx_.mats.m + cx_.mats.count);
+      return compute_derived_field(name, D, materials, [this](const std::string& src) { return field_slice(src); });
+    }
+    const FieldHandle& f = cx_.s.fields().get(name);
+    std::vector<double> out;
+    f.to_host_double(out);
+    return output_slices().slice(out, f.info.components);
+  }
   std::vector<std::string> field_names() const override { return available_field_names(cx_.s.fields()); }
 
   Checkpoint checkpoint() override;
@@ -240,6 +253,7 @@ class Simulation final : public Engine {
   void setup_context(const Scene& sc);
   void share_out(const Scene& sc);
   void plan_halo();
+  const OrderSlices& output_slices();
   std::vector<double> particle_costs() const;
   std::vector<double> rebalance_costs();
   std::vector<long long> output_order() const;
@@ -255,6 +269,7 @@ class Simulation final : public Engine {
   SolverOptions opt_;
   Communicator& comm_;
   std::unique_ptr<ParticleDomain<D, B>> domain_;  // a run shared out over processes only
+  std::unique_ptr<OrderSlices> slices_;           // this process's slice of the outputs, until the next sort
   int particles_ = 0;  // of the whole run
   double halo_width_ = 0;
   double busy_ = 0;    // seconds in step() since the last list build

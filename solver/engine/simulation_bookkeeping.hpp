@@ -8,7 +8,6 @@
 #include <stdexcept>
 
 #include "engine/simulation.hpp"
-#include "parallel/order_slices.hpp"
 
 namespace psph {
 
@@ -81,6 +80,7 @@ std::vector<double> Simulation<D, B>::particle_costs() const {
 template <int D, class B>
 void Simulation<D, B>::plan_halo() {
   domain_->plan(cx_.s);
+  slices_.reset();
   particles_ = int(comm_.sum(static_cast<long long>(domain_->owned_count())));
   sharing_.processes = comm_.size();
   sharing_.halo_particles = comm_.sum(static_cast<long long>(domain_->halo_count()));
@@ -233,6 +233,13 @@ std::string Simulation<D, B>::culprit(const BadParticle<D>& bad, int code) {
   return domain_ ? from_owner(o.str()) : o.str();
 }
 
+// Which particles of one process's order this process writes of an output (drawn once per list build).
+template <int D, class B>
+const OrderSlices& Simulation<D, B>::output_slices() {
+  if (!slices_) slices_ = std::make_unique<OrderSlices>(comm_, output_order(), owned_flags());
+  return *slices_;
+}
+
 // Told by the one process that knows it (its owner), to every process.
 template <int D, class B>
 std::string Simulation<D, B>::from_owner(const std::string& mine) {
@@ -277,11 +284,8 @@ Checkpoint Simulation<D, B>::checkpoint() {
   rigid_.save(c);
   // Over several processes each holds a slice of one process's particle order: written together,
   // the very checkpoint of one process, which restarts on any number of them.
-  std::unique_ptr<OrderSlices> slices;
-  if (domain_) {
-    slices = std::make_unique<OrderSlices>(comm_, output_order(), owned_flags());
-    c.particles = particles_, c.first = slices->first();
-  }
+  const OrderSlices* slices = domain_ ? &output_slices() : nullptr;
+  if (slices) c.particles = particles_, c.first = slices->first();
   for (const auto& f : cx_.s.fields().all()) {
     const FieldInfo& i = f.info;
     c.fields.push_back(CheckpointField{i.name, f.element_bytes, {}, i.type, i.components, i.unit, i.description});

@@ -17,11 +17,15 @@ void to_float(const std::vector<double>& in, int n, int comps, int out_comps, st
 
 }  // namespace
 
-std::vector<std::string> stage_frame(Engine& e, const std::vector<std::string>& fields, ParticleFrame& frame) {
-  const int n = e.particles(), D = e.dimension();
+std::vector<std::string> stage_frame(Engine& e, const std::vector<std::string>& fields, ParticleFrame& frame,
+                                     bool slice) {
+  auto get = [&](const std::string& name) { return slice ? e.field_slice(name) : e.field(name); };
+  const int D = e.dimension();
+  const std::vector<double> x = get("position");
+  const int n = static_cast<int>(x.size() / D);
   frame.dimension = D;
   frame.n = n;
-  to_float(e.field("position"), n, D, 3, frame.position);
+  to_float(x, n, D, 3, frame.position);
   const std::vector<std::string> have = e.field_names();
   std::vector<std::string> missing;
   for (const std::string& name : fields) {
@@ -29,7 +33,7 @@ std::vector<std::string> stage_frame(Engine& e, const std::vector<std::string>& 
       missing.push_back(name);
       continue;
     }
-    const std::vector<double> v = e.field(name);
+    const std::vector<double> v = get(name);
     const int comps = n > 0 ? static_cast<int>(v.size() / n) : 1;
     StagedField& s = frame.slot(name);
     s.components = comps == D && D > 1 ? 3 : comps;  // vectors as 3 components, as ParaView expects

@@ -10,6 +10,8 @@ namespace psph {
 
 // Copies positions and `fields` (registered or derived) into `frame` as float, vectors of D
 // components padded to 3. Returns the names the engine does not have (those are left out).
-std::vector<std::string> stage_frame(Engine& e, const std::vector<std::string>& fields, ParticleFrame& frame);
+// `slice`: this process's slice of them only (Engine::field_slice), as each writes its piece.
+std::vector<std::string> stage_frame(Engine& e, const std::vector<std::string>& fields, ParticleFrame& frame,
+                                     bool slice = false);
 
 }  // namespace psph

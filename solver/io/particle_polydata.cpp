@@ -7,6 +7,7 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkCellType.h>
 
 namespace psph {
 namespace {
@@ -17,6 +18,14 @@ vtkSmartPointer<vtkFloatArray> wrap_array(const std::vector<float>& v, int comps
   a->SetNumberOfComponents(comps);
   a->SetArray(const_cast<float*>(v.data()), static_cast<vtkIdType>(v.size()), 1);  // save = 1: not owned
   return a;
+}
+
+void add_fields(const ParticleFrame& f, vtkPointData* to) {
+  for (const StagedField& s : f.fields) {
+    if (s.data.size() != static_cast<std::size_t>(f.n) * s.components)
+      throw std::logic_error("staged field '" + s.name + "' has the wrong size");
+    to->AddArray(wrap_array(s.data, s.components, s.name));
+  }
 }
 
 }  // namespace
@@ -38,12 +47,17 @@ vtkSmartPointer<vtkPolyData> ParticlePolyData::wrap(const ParticleFrame& f) {
   pts->SetData(wrap_array(f.position, 3, "position"));
   poly->SetPoints(pts);
   poly->SetVerts(verts_);
-  for (const StagedField& s : f.fields) {
-    if (s.data.size() != static_cast<std::size_t>(f.n) * s.components)
-      throw std::logic_error("staged field '" + s.name + "' has the wrong size");
-    poly->GetPointData()->AddArray(wrap_array(s.data, s.components, s.name));
-  }
+  add_fields(f, poly->GetPointData());
   return poly;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> ParticlePolyData::wrap_grid(const ParticleFrame& f) {
+  const vtkSmartPointer<vtkPolyData> poly = wrap(f);
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetPoints(poly->GetPoints());
+  grid->SetCells(VTK_VERTEX, verts_);
+  grid->GetPointData()->ShallowCopy(poly->GetPointData());
+  return grid;
 }
 
 }  // namespace psph

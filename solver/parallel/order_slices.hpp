@@ -51,6 +51,15 @@ class OrderSlices {
   long long count() const { return static_cast<long long>(from_.size()); }
   long long total() const { return total_; }
 
+  // The same for `comps` values per particle.
+  std::vector<double> slice(const std::vector<double>& values, int comps) const {
+    Bytes b(values.size() * sizeof(double));
+    if (!b.empty()) std::memcpy(b.data(), values.data(), b.size());
+    b = slice(b, sizeof(double) * std::size_t(comps));
+    std::vector<double> out(b.size() / sizeof(double));
+    if (!b.empty()) std::memcpy(out.data(), b.data(), b.size());
+    return out;
+  }
   // This process's slice of a field whose particles' values are `elem` bytes each.
   Bytes slice(const Bytes& values, std::size_t elem) const {
     std::vector<Bytes> send(comm_.size()), recv;

@@ -39,6 +39,9 @@ struct OutputOptions {
   double checkpoint_interval = 0;  // s; 0 = a tenth of the run. A final one is always written.
   int checkpoint_keep = 2;         // newest checkpoints kept in checkpoints/
   std::vector<std::string> fields{"velocity", "pressure", "density", "material"};
+  // Extracts as VTK polydata ("vtp") or unstructured grids of vertex cells ("vtu"); over several
+  // processes one piece each, gathered by a .pvtp or .pvtu.
+  std::string extract_format = "vtp";
 };
 
 struct Case {

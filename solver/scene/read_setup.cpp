@@ -113,6 +113,7 @@ void read_time_and_output(CaseReader& top, CaseDraft& d) {
   c.output.checkpoint_interval = r.non_negative("checkpoint_interval", 0.0);
   c.output.checkpoint_keep = static_cast<int>(r.positive_integer("checkpoint_keep", c.output.checkpoint_keep));
   c.output.fields = r.strings("fields", c.output.fields);
+  c.output.extract_format = r.choice("extract_format", {"vtp", "vtu"}, "vtp");
   bound_outputs(r, "monitor_interval", c.end_time, c.output.monitor_interval, kMaxRows, "monitor rows");
   bound_outputs(r, "extract_interval", c.end_time, c.output.extract_interval, kMaxFiles, "extract files");
   bound_outputs(r, "checkpoint_interval", c.end_time, c.output.checkpoint_interval, kMaxFiles, "checkpoints");

@@ -1,9 +1,8 @@
-// An interactive view of one particle extract (VTP) with vtk.js: rotate and zoom with the mouse,
+// An interactive view of one particle extract (VTP, VTU or their parallel sets) with vtk.js: rotate and zoom with the mouse,
 // colour by any point field (vectors by magnitude), hide phases (by the material field), and keep
 // only a slab across one axis.
 import '@kitware/vtk.js/Rendering/Profiles/Geometry';
 import vtkGenericRenderWindow from '@kitware/vtk.js/Rendering/Misc/GenericRenderWindow';
-import vtkXMLPolyDataReader from '@kitware/vtk.js/IO/XML/XMLPolyDataReader';
 import vtkPolyData from '@kitware/vtk.js/Common/DataModel/PolyData';
 import vtkDataArray from '@kitware/vtk.js/Common/Core/DataArray';
 import vtkActor from '@kitware/vtk.js/Rendering/Core/Actor';
@@ -11,6 +10,7 @@ import vtkMapper from '@kitware/vtk.js/Rendering/Core/Mapper';
 import vtkColorTransferFunction from '@kitware/vtk.js/Rendering/Core/ColorTransferFunction';
 import vtkColorMaps from '@kitware/vtk.js/Rendering/Core/ColorTransferFunction/ColorMaps';
 import { number } from './format.js';
+import { readExtract } from './extract_reader.js';
 
 const PRESETS = { damage: 'Inferno (matplotlib)', colour: 'Blue Orange (divergent)', pressure: 'Viridis (matplotlib)' };
 
@@ -37,20 +37,11 @@ export class View3D {
   }
 
   async load(url) {
-    const r = await fetch(url);
-    if (!r.ok) throw new Error(`${url}: HTTP ${r.status}`);
-    const reader = vtkXMLPolyDataReader.newInstance();
-    reader.parseAsArrayBuffer(await r.arrayBuffer());
-    const pd = reader.getOutputData(0);
+    const extract = await readExtract(url);
     const first = !this.points;
-    this.points = pd.getPoints().getData();
-    this.fields = {};
-    const data = pd.getPointData();
-    for (let k = 0; k < data.getNumberOfArrays(); k += 1) {
-      const a = data.getArrayByIndex(k);
-      this.fields[a.getName()] = { values: a.getData(), components: a.getNumberOfComponents() };
-    }
-    this.bounds = pd.getBounds();
+    this.points = extract.points;
+    this.fields = extract.fields;
+    this.bounds = extract.bounds;
     this.url = url;
     if (!(this.field in this.fields)) this.field = 'pressure' in this.fields ? 'pressure' : Object.keys(this.fields)[0] || '';
     this.update();
