@@ -20,6 +20,9 @@ struct InSituConfig {
   std::vector<std::string> scripts;  // pipeline script paths (see pipeline_scripts.hpp)
   std::string settings_file;         // JSON the scripts read (camera, slab, ranges, output folders)
   std::string live_url;              // HOST:PORT for ParaView Live, empty = off
+  // The MPI communicator (an MPI_Comm*) of the processes that render together, each its piece
+  // (ParaView composites their images); null for one process.
+  const void* mpi_comm = nullptr;
 };
 
 class InSitu {

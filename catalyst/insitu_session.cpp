@@ -22,8 +22,9 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
-InSituSession::InSituSession(const Case& c, const std::vector<std::string>& cli, const std::string& live)
-    : live_(live), every_frame_(c.visualisation.every_frame) {
+InSituSession::InSituSession(const Case& c, const std::vector<std::string>& cli, const std::string& live,
+                             Communicator& comm)
+    : comm_(comm), live_(live), every_frame_(c.visualisation.every_frame || comm.parallel()) {
   std::vector<std::string> names = c.visualisation.pipelines;
   names.insert(names.end(), cli.begin(), cli.end());
   if (names.empty() && !live.empty()) names.push_back("live");
@@ -47,9 +48,9 @@ InSituSession::InSituSession(const Case& c, const std::vector<std::string>& cli,
 
 InSituSession::~InSituSession() = default;
 
-std::vector<std::string> InSituSession::stage(Engine& e) {
+std::vector<std::string> InSituSession::stage(Engine& e, bool piece) {
   const auto t0 = std::chrono::steady_clock::now();
-  std::vector<std::string> missing = stage_frame(e, fields_, frame_);
+  std::vector<std::string> missing = stage_frame(e, fields_, frame_, piece);
   staging_s_ += seconds_since(t0);
   return missing;
 }
@@ -64,25 +65,36 @@ void InSituSession::rendered(long frame, long step, double time, double seconds)
   coprocess_s_ += seconds;
   frames_ = frame + 1;
   // The frame's images are written: say so to the dashboard (dashboard/run_watcher.hpp).
-  frames_csv_ << frame << ',' << step << ',' << time << '\n' << std::flush;
+  if (frames_csv_.is_open()) frames_csv_ << frame << ',' << step << ',' << time << '\n' << std::flush;
 }
 
 void InSituSession::start(Engine& e, const Case& c, const std::string& run_dir,
                           const std::function<void(const std::string&)>& log) {
-  for (const auto& m : stage(e)) log("note: no field '" + m + "' in this case (its physics is not active); pipelines go without it");
+  // The settings from the whole first frame (the same on every process); the first process writes them.
+  for (const auto& m : stage(e, false)) log("note: no field '" + m + "' in this case (its physics is not active); pipelines go without it");
   const fs::path run = fs::absolute(run_dir);
   nlohmann::json settings = resolve_vis_settings(c, frame_, (run / "images").string(), (run / "extracts").string(), live_);
   std::vector<std::string> paths;
   for (const auto& s : scripts_) paths.push_back(s.path);
   settings["pipelines"] = paths;
-  fs::create_directories(run / "images");
-  frames_csv_.open(run / "images" / "frames.csv");
-  frames_csv_.precision(10);
-  frames_csv_ << "frame,step,time\n";
   const fs::path file = run / "images" / "visualisation.json";
-  std::ofstream(file) << settings.dump(2) << "\n";
+  if (comm_.rank() == 0) {
+    fs::create_directories(run / "images");
+    frames_csv_.open(run / "images" / "frames.csv");
+    frames_csv_.precision(10);
+    frames_csv_ << "frame,step,time\n";
+    std::ofstream(file) << settings.dump(2) << "\n";
+  }
+  comm_.barrier();  // written before any process's pipelines read it
+  if (comm_.parallel()) {
+    render_comm_ = comm_.duplicate_for_thread();
+    if (!render_comm_)
+      throw std::runtime_error("in-situ pipelines over several processes need an MPI that allows calls from several "
+                               "threads (MPI_THREAD_MULTIPLE); run without them and render the extracts with poresph figures");
+    stage(e, true);
+  }
   const auto t0 = std::chrono::steady_clock::now();
-  const InSituConfig config{paths, file.string(), live_};
+  const InSituConfig config{paths, file.string(), live_, render_comm_.get()};
   // On the CPU backend the renderer shares the solver's cores: a twentieth of the wall time at most.
   const double share = e.backend() == "cpu" ? kCpuRenderShare : 1.0;
   render_ = std::make_unique<RenderThread>([config] { return make_insitu(config); }, every_frame_, share,
@@ -98,7 +110,7 @@ void InSituSession::start(Engine& e, const Case& c, const std::string& run_dir,
 
 void InSituSession::output(Engine& e) {
   if (!render_ || e.steps() == last_step_) return;
-  stage(e);
+  stage(e, comm_.parallel());
   hand_over(e);
 }
 

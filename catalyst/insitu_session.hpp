@@ -14,6 +14,7 @@
 #include "catalyst/pipeline_scripts.hpp"
 #include "catalyst/render_thread.hpp"
 #include "engine/engine.hpp"
+#include "parallel/communicator.hpp"
 #include "scene/case_file.hpp"
 
 namespace psph {
@@ -22,7 +23,10 @@ class InSituSession {
  public:
   // Resolves the pipelines of the case and of --pipeline, and --live (which alone uses the
   // `live` pipeline). Throws std::invalid_argument or InSituUnavailable, before anything is written.
-  InSituSession(const Case& c, const std::vector<std::string>& cli_pipelines, const std::string& live_url);
+  // Over several processes (`comm`) every process renders its piece of every frame together with
+  // the others (no frame is dropped: every process must draw the same ones).
+  InSituSession(const Case& c, const std::vector<std::string>& cli_pipelines, const std::string& live_url,
+                Communicator& comm);
   ~InSituSession();
   bool active() const { return !scripts_.empty(); }
   // Fields the pipelines declared (their union).
@@ -46,10 +50,13 @@ class InSituSession {
   std::string report(double wall) const;  // the same in one log line
 
  private:
-  std::vector<std::string> stage(Engine& e);  // timed; returns the fields the engine lacks
+  // Timed; returns the fields the engine lacks. `piece`: this process's slice of the particles.
+  std::vector<std::string> stage(Engine& e, bool piece);
   void hand_over(Engine& e);                  // the staged frame to the render thread
   void rendered(long frame, long step, double time, double seconds);  // on the render thread
 
+  Communicator& comm_;
+  std::shared_ptr<void> render_comm_;  // the render thread's MPI communicator (several processes)
   std::vector<PipelineScript> scripts_;
   std::vector<std::string> fields_;
   std::string live_, note_;

@@ -106,6 +106,9 @@ nlohmann::json resolve_vis_settings(const Case& c, const ParticleFrame& first, c
   j["images_dir"] = images_dir;
   j["extracts_dir"] = extracts_dir;
   j["point_radius"] = v.point_radius > 0 ? v.point_radius : 0.5 * s.options.spacing;
+  // The domain and a point's radius around it: where every process's renderer may draw.
+  const double r = j["point_radius"].get<double>();
+  j["bounds"] = {lo[0] - r, hi[0] + r, lo[1] - r, hi[1] + r, lo[2] - r, hi[2] + r};
   j["scalar_bar"] = v.scalar_bar;
   j["time_label"] = v.time_label;
   j["live_url"] = live_url;

@@ -7,11 +7,12 @@ figures), and writes one PNG per output step and view into images/<pipeline>/. T
 $PORESPH_VIS_SETTINGS, which poresph resolves from the case file at the first output step.
 """
 import json
+import math
 import os
 
 from paraview import catalyst
 from paraview.simple import (Calculator, ColorBy, CreateExtractor, CreateView, ExtractSurface,
-                             GetColorTransferFunction, GetScalarBar, Show, Text, Threshold,
+                             GetColorTransferFunction, GetScalarBar, ProgrammableFilter, Show, Text, Threshold,
                              TrivialProducer)
 
 _state = {"live_taken": False, "slab_extract_taken": False, "time_labels": []}
@@ -63,8 +64,63 @@ def _view(s, cam):
     return v
 
 
+def _processes():
+    from paraview import servermanager
+    return servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+
+
+_CORNERS = """
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray
+b = %r
+points = vtkPoints()
+points.InsertNextPoint(b[0], b[2], b[4])
+points.InsertNextPoint(b[1], b[3], b[5])
+verts = vtkCellArray()
+for k in range(2):
+    verts.InsertNextCell(1)
+    verts.InsertCellPoint(k)
+out = self.GetPolyDataOutput()
+out.SetPoints(points)
+out.SetVerts(verts)
+"""
+
+
+def _span_the_scene(source, view, s):
+    """ParaView crops each process's image to the bounds of its representations' data, and a
+    sphere reaches a radius past its particle: two points at the corners of the scene padded by
+    that radius, on every process, one pixel each in the background's colour, make every
+    process's image whole."""
+    corners = ProgrammableFilter(Input=source)
+    corners.OutputDataSetType = "vtkPolyData"
+    corners.Script = _CORNERS % (s["bounds"],)
+    d = Show(corners, view)
+    d.SetRepresentationType("Points")
+    d.PointSize = 1
+    d.AmbientColor = d.DiffuseColor = list(view.Background)
+
+
+def _pixels_per_metre(view):
+    """At the focal point: the view's height in pixels over its height in metres."""
+    if view.CameraParallelProjection:
+        height = 2 * view.CameraParallelScale
+    else:
+        d = math.dist(view.CameraPosition, view.CameraFocalPoint)
+        height = 2 * d * math.tan(math.radians(view.CameraViewAngle) / 2)
+    return view.ViewSize[1] / height
+
+
 def _particles_display(source, view, s):
     d = Show(source, view)
+    if _processes() > 1:
+        # Point Gaussian splats are composited in the order of regions ParaView redistributes the
+        # particles into, each cut at its region's bounds: over several processes, sphere-shaded
+        # points of the same size in pixels (at the focal point), composited by depth.
+        d.SetRepresentationType("Points")
+        d.RenderPointsAsSpheres = 1
+        d.PointSize = max(1.0, 2 * s["point_radius"] * _pixels_per_metre(view))
+        _span_the_scene(source, view, s)
+        return d
     d.SetRepresentationType("Point Gaussian")
     d.ShaderPreset = "Sphere"
     d.GaussianRadius = s["point_radius"]

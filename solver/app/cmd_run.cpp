@@ -38,7 +38,8 @@ int cmd_check(const std::string& path, const std::vector<std::string>& sets, boo
     // What `run` builds before its run directory: the engine (on the CPU: the same fields on
     // every backend), the output fields it has, the pipelines and the fields they declare.
     check_output_fields(c, make_engine(c.scene, "cpu")->field_names());
-    InSituSession pipelines(c, {}, "");
+    Communicator one;
+    InSituSession pipelines(c, {}, "", one);
     estimate = estimate_compressibility(c);
   } catch (const std::exception& e) {
     std::cerr << "poresph: " << e.what() << "\n";

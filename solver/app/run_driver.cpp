@@ -79,13 +79,10 @@ int RunDriver::open() {
     }
   }
   try {
-    insitu_ = std::make_unique<InSituSession>(c_, opt_.pipelines, opt_.live);
+    insitu_ = std::make_unique<InSituSession>(c_, opt_.pipelines, opt_.live, comm_);
   } catch (const std::exception& e) {
     return refuse(e.what());
   }
-  if (comm_.parallel() && insitu_->active())
-    return refuse("in-situ pipelines do not run over several processes yet: run without mpirun, or without "
-                  "pipelines and render the extracts afterwards (poresph figures)");
   if (opt_.serve >= 0 && !dashboard_available())
     return refuse("--serve: this poresph was built without the dashboard (cpp-httplib was not found at build time)");
   dir_ = opt_.out.empty() ? default_run_directory(c_.name) : opt_.out;
@@ -184,7 +181,9 @@ int RunDriver::start() {
     insitu_->start(*engine_, c_, rd_->path(), [&](const std::string& l) { log(l); });
   } catch (const std::exception& e) {
     log(std::string("failed: in-situ visualisation: ") + e.what());
-    supervision_->finish(*engine_, "failed", std::string("in-situ visualisation: ") + e.what(), wall_now());
+    status_ = "failed", code_ = 4, diagnostic_ = std::string("in-situ visualisation: ") + e.what();
+    stop_every_process();  // over several processes the others may wait for this one inside Catalyst
+    supervision_->finish(*engine_, status_, diagnostic_, wall_now());
     return 4;
   }
   return 0;

@@ -36,6 +36,10 @@ class Communicator {
   // The MPI communicator (an MPI_Comm*) for libraries that take one (parallel HDF5, Catalyst);
   // null for one process without MPI.
   virtual const void* mpi_comm() const { return nullptr; }
+  // A new MPI communicator of the same processes (an MPI_Comm*, freed with the handle; every
+  // process calls), for a library that calls MPI from another thread (Catalyst on the render
+  // thread); null without MPI or where MPI does not allow calls from several threads.
+  virtual std::shared_ptr<void> duplicate_for_thread() { return nullptr; }
   // Seconds spent in the calls above since the start (waiting for other processes included).
   virtual double seconds_in_calls() const { return 0; }
 };

@@ -1,5 +1,6 @@
-// The communicator over MPI's world (OpenMPI from Debian). Only the main thread calls MPI
-// (MPI_THREAD_FUNNELED): the render and dashboard threads never do.
+// The communicator over MPI's world (OpenMPI from Debian). Only the main thread calls it; MPI is
+// started with MPI_THREAD_MULTIPLE where it allows so that Catalyst, on the render thread, may
+// composite over a communicator of its own (duplicate_for_thread).
 #define OMPI_SKIP_MPICXX 1  // the C API only (the C++ bindings are deprecated and not linked)
 #define MPICH_SKIP_MPICXX 1
 #include <mpi.h>
@@ -44,13 +45,27 @@ class MpiCommunicator final : public Communicator {
   MpiCommunicator() : world_(MPI_COMM_WORLD) {
     int ready = 0, provided = 0;
     MPI_Initialized(&ready);
-    if (!ready) check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
+    if (!ready) check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_MULTIPLE, &provided), "MPI_Init_thread");
+    else MPI_Query_thread(&provided);
+    threads_ = provided >= MPI_THREAD_MULTIPLE;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
   }
   int rank() const override { return rank_; }
   int size() const override { return size_; }
   const void* mpi_comm() const override { return &world_; }
+  std::shared_ptr<void> duplicate_for_thread() override {
+    if (!threads_) return nullptr;
+    auto* dup = new MPI_Comm;
+    check(MPI_Comm_dup(world_, dup), "MPI_Comm_dup");
+    return std::shared_ptr<void>(dup, [](void* p) {
+      auto* c = static_cast<MPI_Comm*>(p);
+      int finalised = 0;
+      MPI_Finalized(&finalised);
+      if (!finalised) MPI_Comm_free(c);
+      delete c;
+    });
+  }
 
   void sum(ExactSum* acc, int count) override {
     const CallClock clock(seconds_);
@@ -138,6 +153,7 @@ class MpiCommunicator final : public Communicator {
  private:
   int rank_ = 0, size_ = 1;
   MPI_Comm world_;
+  bool threads_ = false;  // MPI_THREAD_MULTIPLE provided
   double seconds_ = 0;
 };
 
