@@ -5,7 +5,7 @@
 # tests/checkpoint_h5py.py); so do VTU extracts; a checkpoint of one process restarts on three, one of
 # three on two, and both end as the uninterrupted run; SIGTERM ends every process with a final
 # checkpoint (exit 130); a process killed with SIGKILL ends the job without a hang;
-# a case that cannot be shared out yet is refused once, before any work, with nothing left behind.
+# a bad case is refused once, before any work, with nothing left behind.
 # Usage: shared_run_cli.sh PORESPH MPIEXEC SRC WORK
 set -u
 poresph=$(realpath "$1") mpiexec=$2 src=$(realpath "$3") work=$4
@@ -96,10 +96,10 @@ else
   echo "no user namespaces here: the full-disk case did not run"
 fi
 
-# Refused once, before any work: a case with a large-strain solid (not shared out yet).
-"$mpiexec" -n 2 "$poresph" run "$src/cases/softening_bar_2d.toml" --out refused > refused.out 2>&1
+# Refused once, before any work: a case with a bad value.
+"$mpiexec" -n 2 "$poresph" run longer.toml --set time.end=-1 --out refused > refused.out 2>&1
 rc=$?
 [ $rc = 2 ] || fail "refusal: exit $rc, expected 2: $(cat refused.out)"
-[ "$(grep -c 'cannot run over several processes' refused.out)" = 1 ] || fail "refusal not said once: $(cat refused.out)"
+[ "$(grep -c 'time.end' refused.out)" = 1 ] || fail "refusal not said once: $(cat refused.out)"
 [ -e refused ] && fail "a refused run left its directory behind"
 echo "shared run command-line tests passed"

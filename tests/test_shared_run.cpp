@@ -102,6 +102,10 @@ TEST(SharedRun, ElasticRodBetweenClamps1D) { expect_one_process_numbers(embedded
 
 TEST(SharedRun, ClampedCantileverPlate2D) { expect_one_process_numbers(embedded("oscillating_plate_2d"), 200); }
 
+// Large strain (Saint Venant-Kirchhoff) with PCW damage: each particle's neighbours of t = 0 move
+// with it between processes.
+TEST(SharedRun, LargeStrainSofteningBar) { expect_one_process_numbers(embedded("softening_bar_2d"), 150); }
+
 TEST(SharedRun, DamageAroundARigidInclusion) { expect_one_process_numbers(embedded("plate_inclusion_2d"), 60); }
 
 TEST(SharedRun, FluidInAnElasticRing) { expect_one_process_numbers(embedded("lame_cylinder_2d"), 100); }

@@ -60,14 +60,17 @@ struct Scene {
 
 // How far beyond its lists' radius a process of a shared run reads (parallel/): an open
 // boundary's buffer reads around its mirror point (the buffer's thickness and two support radii
-// further), a clamp its partner up to two support radii away and the partner's neighbours.
+// further), a clamp its partner up to two support radii away and the partner's neighbours, a
+// large-strain solid its neighbours of t = 0 however far the strain took them (two support radii
+// more; beyond, the run stops naming the particle).
 inline double halo_reach(const Scene& sc) {
   const double h = sc.options.support_radius;
   bool walls = false, elastic = false;
   for (const auto& m : sc.materials)
     walls |= m.props.kind == MaterialKind::Wall, elastic |= m.props.kind == MaterialKind::Elastic;
   const double open = sc.open_boundary.axis >= 0 ? sc.open_boundary.thickness + 2 * h : 0;
-  return std::max(open, walls && elastic ? 2 * h : 0.0);
+  const bool large_strain = elastic && sc.options.solid_model == SolidModel::SaintVenantKirchhoff;
+  return std::max(open, (walls && elastic) || large_strain ? 2 * h : 0.0);
 }
 
 // sigma / mu_liquid, the velocity scale of capillary flow (spurious currents are measured in it);

@@ -55,9 +55,6 @@ void Simulation<D, B>::setup_context(const Scene& sc) {
 template <int D, class B>
 void Simulation<D, B>::share_out(const Scene& sc) {
   if (!comm_.parallel()) return;
-  if (cx_.elastic && opt_.solid_model == SolidModel::SaintVenantKirchhoff)
-    throw std::invalid_argument("this case's large-strain (Saint Venant-Kirchhoff) solids cannot run over several "
-                                "processes yet: run it on one (without mpirun)");
   Box box;
   std::array<bool, 3> periodic{false, false, false};
   for (int k = 0; k < D; ++k) box.lo[k] = sc.lower[k], box.hi[k] = sc.upper[k], periodic[k] = sc.periodic[k];
@@ -86,6 +83,11 @@ void Simulation<D, B>::plan_halo() {
   sharing_.halo_particles = comm_.sum(static_cast<long long>(domain_->halo_count()));
   // Every clamp partner of an owned particle is here (the halo is wide enough for it unless the
   // solid moved by far more than small strain allows): otherwise an error naming the particle.
+  const int far = elastic_.missing_reference_partner(cx_);
+  if (far >= 0)
+    throw InstabilityError("a reference neighbour (t = 0) of particle " + std::to_string(far) +
+                           " lies beyond the halo of the process that holds it: the solid stretched past the halo's "
+                           "reach (the lists' radius and two support radii)" + when());
   if (!(cx_.elastic && cx_.walls)) return;
   const int missing = cx_.template max_of<int>(MissingClampPartner<D>{cx_.view()});
   if (missing >= 0)

@@ -56,6 +56,13 @@ class ElasticStage {
       s.piola.zero();
       s.defgrad.upload(std::vector<Mat<D>>(n, Mat<D>::identity()));  // undeformed until the first strain pass
       s.add_field(s.defgrad, D * D, "deformation_gradient", "-", "F = I + grad u (large strain), row-major");
+      // The lists of t = 0, a row per particle (recorded at the first list build).
+      reference_width_ = reference_row_width(D, cx.kern.support, cx.spacing);
+      reference_ids_.resize(std::size_t(reference_width_) * n), reference_count_.resize(n);
+      reference_count_.zero();
+      s.add_rows(reference_ids_, reference_width_, "reference_neighbours", "-",
+                 "ids of the solid neighbours within the support at t = 0 (large strain), the first reference_count");
+      s.add_field(reference_count_, 1, "reference_count", "-", "solid neighbours within the support at t = 0 (large strain)");
     }
     if (o.solid_hourglass > 0) s.grad_u.resize(n), s.grad_u.zero();
     cx.follow_ids |= cx.walls || large_strain();  // clamps and reference lists find particles by id
@@ -71,15 +78,19 @@ class ElasticStage {
     if (corrections_kept_) cx.launch(SolidCorrectionPass<D>{cx.pairs(cx.reference_list())}), refresh_corrections(cx);
     if (!large_strain()) return;
     const int n = cx.n();
-    if (reference_count_.size() == 0) {
-      reference_capacity_ = cx.neighbours.capacity();
-      reference_ids_.resize(std::size_t(reference_capacity_) * n), reference_count_.resize(n);
-      B::for_each(n, RecordReferenceNeighbours<D>{cx.list(), cx.view(), cx.mats, reference_ids_.data(),
-                                                  reference_count_.data(), reference_capacity_});
-    }
+    if (!recorded_) record_reference_lists(cx);
     if (cx.s.ghost.size())
       B::for_each(n, PruneGhostReferences<D>{cx.view(), reference_ids_.data(), reference_count_.data(),
-                                             reference_capacity_});
+                                             reference_width_});
+  }
+
+  // A run shared out over processes: the id of a particle whose reference partner lies beyond its
+  // process's halo, or -1 (engine/simulation_bookkeeping.hpp stops the run naming it).
+  int missing_reference_partner(StepContext<D, B>& cx) const {
+    if (!active_ || !large_strain()) return -1;
+    return cx.template max_of<int>(MissingReferencePartner<D>{cx.s.id.data(), cx.s.index_of_id.data(),
+                                                              reference_ids_.data(), reference_count_.data(),
+                                                              reference_width_});
   }
 
   // Displacements and, where the step needs them, strain and stress (the fluid reads the solid's
@@ -157,6 +168,7 @@ class ElasticStage {
   void load(const Checkpoint& c) {
     dissipated_ = c.dissipated_energy;
     strain_step_ = -1;
+    recorded_ = true;  // the lists of t = 0 are the checkpoint's
   }
 
  private:
@@ -170,6 +182,17 @@ class ElasticStage {
     cx.refresh_array(s.kcorr.data(), s.kcorr.size(), "kcorr");
   }
   bool large_strain() const { return o_.solid_model == SolidModel::SaintVenantKirchhoff; }
+  void record_reference_lists(StepContext<D, B>& cx) {
+    const int n = cx.n();
+    B::for_each(n, RecordReferenceNeighbours<D>{cx.list(), cx.view(), cx.mats, cx.grid, cx.kern.support * cx.kern.support,
+                                                reference_ids_.data(), reference_count_.data(), reference_width_});
+    const int most = cx.template max_of<int>(ListCount<D>{reference_count_.data()});
+    if (most > reference_width_)
+      throw std::runtime_error("a solid particle has " + std::to_string(most) + " solid neighbours within the support at "
+                               "t = 0, more than the " + std::to_string(reference_width_) + " its lattice spacing (" +
+                               std::to_string(cx.spacing) + " m) allows: are solid particles closer than the spacing?");
+    recorded_ = true;
+  }
   // Calls f with the solid's neighbours in the reference configuration: the fixed lists of t = 0
   // in large strain; in small strain the current lists with the reference positions (pairs closer
   // than the support there; the skin keeps them listed while the relative displacement of
@@ -177,8 +200,8 @@ class ElasticStage {
   template <class F>
   void with_solid_neighbours(StepContext<D, B>& cx, F&& f) const {
     if (large_strain())
-      f(ReferenceNeighbours<D>{cx.grid, cx.s.x0.data(), cx.s.id.data(), cx.s.index_of_id.data(), reference_ids_.data(),
-                               reference_count_.data(), reference_capacity_, cx.kern.support * cx.kern.support});
+      f(ReferenceNeighbours<D>{cx.grid, cx.s.x0.data(), cx.s.index_of_id.data(), reference_ids_.data(),
+                               reference_count_.data(), reference_width_, cx.kern.support * cx.kern.support});
     else f(cx.reference_list());
   }
 
@@ -189,8 +212,9 @@ class ElasticStage {
   // (solid/elastic_force.hpp, solid_sum_volume), so they are computed after each list build and
   // kept, and the strain pass is one sum instead of three.
   bool corrections_kept_ = false;
-  DeviceArray<std::int32_t, B> reference_ids_, reference_count_;  // large strain: lists of t = 0 by id
-  int reference_capacity_ = 0;
+  DeviceArray<std::int32_t, B> reference_ids_, reference_count_;  // large strain: lists of t = 0, a row each
+  int reference_width_ = 0;
+  bool recorded_ = false;
   double dissipated_ = 0;  // J, by the solid's damping
   long strain_step_ = -1;  // the step whose strain and stress the fields hold
 };

@@ -68,6 +68,16 @@ struct Gather {
   PSPH_HD void operator()(int i) const { out[i] = in[perm[i]]; }
 };
 
+// The same for rows of `width` values per particle: out row i <- in row perm[i].
+template <class T>
+struct GatherRows {
+  T* out;
+  const T* in;
+  const int* perm;
+  int width;
+  PSPH_HD void operator()(int k) const { out[k] = in[std::size_t(perm[k / width]) * width + k % width]; }
+};
+
 // index_of_id[id] = -1: no particle with that id here (a run shared out over processes holds
 // some of them), before IndexOfIdPass.
 struct ClearIndexOfId {
@@ -129,6 +139,26 @@ class ParticleState {
     reg(arr, type, comps, name, unit, what);
   }
 
+  // Registers `width` integers per particle (a row each, width fixed for the run), carried whole
+  // by reorderings, migrations and checkpoints like any field.
+  void add_rows(DeviceArray<std::int32_t, B>& arr, int width, const char* name, const char* unit, const char* what) {
+    FieldHandle h;
+    h.info = FieldInfo{name, FieldType::Int, width, unit, what};
+    h.permute = [this, &arr, width](const int* perm) {
+      DeviceArray<std::int32_t, B>& tmp = scratch<std::int32_t>();
+      tmp.resize(arr.size());
+      B::for_each(static_cast<int>(arr.size()), GatherRows<std::int32_t>{tmp.data(), arr.data(), perm, width});
+      arr.swap(tmp);
+    };
+    h.to_host_double = [&arr](std::vector<double>& out) {
+      const std::vector<std::int32_t> hv = arr.host();
+      out.assign(hv.begin(), hv.end());
+    };
+    h.element_bytes = sizeof(std::int32_t) * std::size_t(width);
+    raw_copies(h, arr);
+    registry_.add(std::move(h));
+  }
+
   // A new particle count (a process's share of a run changed: parallel/particle_domain.hpp): the
   // registered fields hold their new values already; the unregistered per-particle arrays in use
   // are resized, to be recomputed before they are read.
@@ -188,6 +218,13 @@ class ParticleState {
       for (std::size_t k = 0; k < out.size(); ++k) out[k] = static_cast<double>(raw[k]);
     };
     h.element_bytes = sizeof(T);
+    raw_copies(h, arr);
+    registry_.add(std::move(h));
+  }
+
+  // The array's bytes as stored, to and from the host (checkpoints, migrations).
+  template <class T>
+  static void raw_copies(FieldHandle& h, DeviceArray<T, B>& arr) {
     h.data = [&arr]() -> void* { return arr.data(); };
     h.to_host_bytes = [&arr](std::vector<unsigned char>& out) {
       out.resize(arr.size() * sizeof(T));
@@ -197,7 +234,6 @@ class ParticleState {
       arr.resize(in.size() / sizeof(T));
       if (!in.empty()) B::upload(arr.data(), in.data(), in.size());
     };
-    registry_.add(std::move(h));
   }
 
   template <class T>
