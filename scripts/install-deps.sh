@@ -12,8 +12,9 @@ mode=${1:-}
 
 build=(build-essential cmake ninja-build libomp-dev
        libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
-       libgtest-dev libbenchmark-dev libtiff-dev libhdf5-dev python3-h5py procps)
-# (procps: the tests signal runs by name, pgrep and pkill; python3-h5py: they read checkpoints as users do)
+       libgtest-dev libbenchmark-dev libtiff-dev libhdf5-dev python3-h5py procps iproute2)
+# (procps: the tests signal runs by name, pgrep and pkill; python3-h5py: they read checkpoints as users
+# do; iproute2: a run over two hosts made of network namespaces)
 # ParaView: its CMake package needs its Python modules and the -dev packages its exported
 # targets name (MPI, GLEW, NetCDF, HDF5); OpenMPI (libopenmpi-dev, with mpirun) also runs one case
 # over many processes, which write their checkpoints together through OpenMPI's parallel HDF5;
