@@ -21,6 +21,8 @@ class Communicator {
   // result does not depend on how the terms were shared out.
   virtual void sum(ExactSum*, int) {}
   virtual double max(double x) { return x; }
+  // Each of `count` values, the largest over the processes, in place.
+  virtual void max(double*, int) {}
   virtual long long max(long long x) { return x; }
   virtual long long sum(long long x) { return x; }
   // send[r] goes to process r; recv[q] is what process q sent here (sizes known to no one before).

@@ -36,6 +36,7 @@ void Decomposition::bisect(const std::vector<double>& points, const std::vector<
   std::vector<std::array<int, 3>> level{{0, 0, parts}};
   while (!level.empty()) {
     std::vector<Pending> cuts;
+    const std::vector<double> extent = particle_extents(points, at, comm);
     for (const auto& [node, first, p] : level) {
       Node& nd = nodes_[node];
       if (p == 1) {
@@ -43,9 +44,13 @@ void Decomposition::bisect(const std::vector<double>& points, const std::vector<
         leaf_box_[first] = nd.box;
         continue;
       }
+      // Across the longest extent of the node's particles (of its box where it has none): a box
+      // cut across its longest side may hold a slab of particles that cannot be halved.
+      const double* e = &extent[std::size_t(node) * 3];
+      const bool empty = e[0] < 0;
       int axis = 0;
       for (int k = 1; k < dim_; ++k)
-        if (nd.box.hi[k] - nd.box.lo[k] > nd.box.hi[axis] - nd.box.lo[axis]) axis = k;
+        if ((empty ? nd.box.hi[k] - nd.box.lo[k] : e[k]) > (empty ? nd.box.hi[axis] - nd.box.lo[axis] : e[axis])) axis = k;
       nd.axis = axis;
       cuts.push_back(Pending{node, first, p, nd.box.lo[axis], nd.box.hi[axis], 0});
     }
@@ -94,6 +99,25 @@ void Decomposition::bisect(const std::vector<double>& points, const std::vector<
     }
     level = std::move(next);
   }
+}
+
+// Each node's particles' extent along each axis over every process (-1 where it has none).
+std::vector<double> Decomposition::particle_extents(const std::vector<double>& points, const std::vector<int>& at,
+                                                    Communicator& comm) const {
+  const std::size_t nodes = nodes_.size();
+  std::vector<double> span(nodes * 6, -HUGE_VAL);  // per node and axis: -min, max
+  for (std::size_t i = 0; i < at.size(); ++i)
+    for (int k = 0; k < dim_; ++k) {
+      const double x = points[i * dim_ + k];
+      double* s = &span[std::size_t(at[i]) * 6 + 2 * k];
+      s[0] = std::max(s[0], -x), s[1] = std::max(s[1], x);
+    }
+  comm.max(span.data(), int(span.size()));
+  std::vector<double> extent(nodes * 3, -1);
+  for (std::size_t c = 0; c < nodes; ++c)
+    for (int k = 0; k < dim_; ++k)
+      if (span[c * 6 + 2 * k + 1] > -HUGE_VAL) extent[c * 3 + k] = span[c * 6 + 2 * k + 1] + span[c * 6 + 2 * k];
+  return extent;
 }
 
 int Decomposition::owner(const double* x) const {

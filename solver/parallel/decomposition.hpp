@@ -1,6 +1,6 @@
 #pragma once
 // Recursive coordinate bisection of the domain into one box per process, balanced by each
-// particle's cost: a node with p processes is cut across its longest axis where the weight
+// particle's cost: a node with p processes is cut across its particles' longest extent where the weight
 // below the cut is floor(p/2)/p of the node's (found by bisection on the cut with exact global
 // sums, so every process finds the very same cuts). The owner of a point is the leaf that holds
 // it; the halo of a process is what lies within a width of its box (periodic axes wrap).
@@ -41,6 +41,8 @@ class Decomposition {
     Box box;
   };
   void near(int node, const double* x, double width2, int self, std::vector<int>& out) const;
+  std::vector<double> particle_extents(const std::vector<double>& points, const std::vector<int>& at,
+                                       Communicator& comm) const;
 
   int dim_;
   Box domain_;
