@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/pass_profile.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/decomposition.hpp"
 #include "state/particles.hpp"
@@ -53,6 +54,8 @@ class ParticleDomain {
   // With `cost` (one per particle here), the domain is cut anew first, balancing the owned
   // particles' costs.
   void redistribute(ParticleState<D, B>& s, const std::vector<double>& cost = {}) {
+    static const std::string what = "migration and halo (processes)";
+    const HostPassClock clock(what);  // in the run's profile, beside the passes
     const std::vector<double> x = positions(s);
     const std::vector<std::uint8_t> own = owned_.host();
     const int me = comm_.rank();
@@ -172,8 +175,12 @@ class ParticleDomain {
     int count() const { return n_; }
     HostFields subset(const std::vector<int>& idx) const {
       HostFields out = empty_like();
-      for (std::size_t f = 0; f < elem_.size(); ++f)
-        for (int i : idx) out.data_[f].insert(out.data_[f].end(), at(f, i), at(f, i) + elem_[f]);
+      for (std::size_t f = 0; f < elem_.size(); ++f) {
+        const std::size_t e = elem_[f];
+        out.data_[f].resize(idx.size() * e);
+        unsigned char* to = out.data_[f].data();
+        for (std::size_t k = 0; k < idx.size(); ++k) std::memcpy(to + k * e, at(f, idx[k]), e);
+      }
       out.n_ = int(idx.size());
       return out;
     }
@@ -241,6 +248,8 @@ class ParticleDomain {
 
   // In place where the backend's memory is the host's; through a host copy otherwise.
   void refresh_raw(unsigned char* a, std::size_t elem, std::size_t n, const char* what) {
+    static const std::string refresh = "halo refresh (processes)";
+    const HostPassClock clock(refresh);
     if (n != owned_.size())
       throw std::logic_error(std::string("halo of '") + what + "': " + std::to_string(n) + " values for " +
                              std::to_string(owned_.size()) + " particles");
