@@ -52,38 +52,49 @@ class ParticleDomain {
 
   // At a list rebuild: the halo dropped, migrants sent to their owners, the halo gathered again.
   // With `cost` (one per particle here), the domain is cut anew first, balancing the owned
-  // particles' costs.
+  // particles' costs. The staying particles stay on the device (a permutation, as the sort's);
+  // only the migrants and the halo go through the host.
   void redistribute(ParticleState<D, B>& s, const std::vector<double>& cost = {}) {
     static const std::string what = "migration and halo (processes)";
     const HostPassClock clock(what);  // in the run's profile, beside the passes
     const std::vector<double> x = positions(s);
     const std::vector<std::uint8_t> own = owned_.host();
-    const int me = comm_.rank();
+    const int me = comm_.rank(), n = s.size();
     if (!cost.empty()) {
       std::vector<double> xo, wo;
-      for (int i = 0; i < s.size(); ++i)
+      for (int i = 0; i < n; ++i)
         if (own[i]) xo.insert(xo.end(), &x[std::size_t(i) * D], &x[std::size_t(i) * D] + D), wo.push_back(cost[i]);
       cuts_.bisect(xo, wo, comm_.size(), comm_);
     }
-    std::vector<int> stay;
+    std::vector<int> order, rest;  // the staying particles, then every other
     std::vector<std::vector<int>> go(comm_.size());
-    for (int i = 0; i < s.size(); ++i) {
-      if (!own[i]) continue;
-      const int o = cuts_.owner(&x[std::size_t(i) * D]);
-      (o == me ? stay : go[o]).push_back(i);
+    for (int i = 0; i < n; ++i) {
+      const int o = own[i] ? cuts_.owner(&x[std::size_t(i) * D]) : -1;
+      (o == me ? order : rest).push_back(i);
+      if (o >= 0 && o != me) go[o].push_back(i);
     }
-    HostFields h(s);
-    HostFields mine = h.subset(stay);
-    mine.append(receive(h, go));
-    const std::vector<double> xo = mine.positions();
+    const HostFields migrants = receive(HostFieldsOf{s}, go);
+    const int stay = int(order.size());
+    std::vector<double> mine(std::size_t(stay) * D);  // the positions of the particles kept, then of the migrants
+    for (int k = 0; k < stay; ++k)
+      for (int d = 0; d < D; ++d) mine[std::size_t(k) * D + d] = x[std::size_t(order[k]) * D + d];
+    order.insert(order.end(), rest.begin(), rest.end());
+    perm_.upload(order);
+    s.permute(perm_.data());
+    for (const auto& f : s.fields().all()) f.keep_first(stay);
+    migrants.place(s, stay);
+    const std::vector<double> xm = migrants.positions();
+    mine.insert(mine.end(), xm.begin(), xm.end());
     std::vector<std::vector<int>> copies(comm_.size());
     std::vector<int> near;
-    for (int i = 0; i < mine.count(); ++i) {
-      cuts_.parts_near(&xo[std::size_t(i) * D], width_, me, near);
+    const int owned = stay + migrants.count();
+    for (int i = 0; i < owned; ++i) {
+      cuts_.parts_near(&mine[std::size_t(i) * D], width_, me, near);
       for (int r : near) copies[r].push_back(i);
     }
-    mine.append(receive(mine, copies));
-    mine.upload(s);
+    const HostFields halo = receive(HostFieldsOf{s}, copies);
+    halo.place(s, owned);
+    s.set_count(owned + halo.count());
   }
 
   // After the sort: which particles are owned, which go to whom, where the halo's values land
@@ -172,7 +183,22 @@ class ParticleDomain {
       n_ = elem_.empty() ? 0 : int(data_[0].size() / elem_[0]);
     }
     HostFields() = default;
+    // Only the particles `idx` (gathered on the device, then downloaded).
+    HostFields(const ParticleState<D, B>& s, const std::vector<int>& idx) {
+      for (const auto& f : s.fields().all()) {
+        elem_.push_back(f.element_bytes);
+        data_.emplace_back();
+        f.gather_to_host(idx, data_.back());
+        if (f.info.name == "position") xfield_ = int(elem_.size()) - 1;
+      }
+      n_ = int(idx.size());
+    }
     int count() const { return n_; }
+    // These particles' values into every field of `s` from particle `at` on.
+    void place(ParticleState<D, B>& s, int at) const {
+      std::size_t f = 0;
+      for (const auto& h : s.fields().all()) h.place(data_[f++], at);
+    }
     HostFields subset(const std::vector<int>& idx) const {
       HostFields out = empty_like();
       for (std::size_t f = 0; f < elem_.size(); ++f) {
@@ -234,8 +260,17 @@ class ParticleDomain {
     int xfield_ = 0, n_ = 0;
   };
 
-  // Sends to[r]'s particles of `from` to process r; what every process sent here.
-  HostFields receive(const HostFields& from, const std::vector<std::vector<int>>& to) {
+  // The particles of a state, gathered on the device as they are asked for.
+  struct HostFieldsOf {
+    const ParticleState<D, B>& s;
+    HostFields subset(const std::vector<int>& idx) const { return HostFields(s, idx); }
+    HostFields empty_like() const { return HostFields(s, {}); }
+  };
+
+  // Sends to[r]'s particles of `from` (HostFields or HostFieldsOf) to process r; what every
+  // process sent here.
+  template <class Source>
+  HostFields receive(const Source& from, const std::vector<std::vector<int>>& to) {
     std::vector<Bytes> send(comm_.size()), recv;
     for (int r = 0; r < comm_.size(); ++r)
       if (!to[r].empty()) send[r] = from.subset(to[r]).pack();
@@ -297,6 +332,7 @@ class ParticleDomain {
   Decomposition cuts_;
   double width_ = 0;
   DeviceArray<std::uint8_t, B> owned_;
+  DeviceArray<int, B> perm_;  // a migration's order: the staying particles first
   int owned_count_ = 0;
   std::vector<std::vector<int>> send_, recv_;
   long long halo_bytes_ = 0, refreshes_ = 0;

@@ -29,6 +29,12 @@ struct FieldHandle {
   std::function<void(std::vector<unsigned char>&)> to_host_bytes;
   std::function<void(const std::vector<unsigned char>&)> from_host_bytes;  // size = n * element_bytes
   std::function<void*()> data;  // the array in the backend's memory
+  // Migrations between processes (parallel/particle_domain.hpp): the values of the particles
+  // `idx` on the host, `element_bytes` each; only the first n particles kept; `count` particles'
+  // values placed from particle `at` on (those before kept, the array ending after them).
+  std::function<void(const std::vector<int>& idx, std::vector<unsigned char>&)> gather_to_host;
+  std::function<void(int n)> keep_first;
+  std::function<void(const std::vector<unsigned char>&, int at)> place;
 };
 
 class FieldRegistry {

@@ -1,6 +1,7 @@
 #pragma once
 // Particle state as a structure of arrays in a backend's memory, with every array registered by
 // name. `ParticleView` is the raw-pointer view the passes receive by value.
+#include <algorithm>
 #include <cstdint>
 #include <type_traits>
 #include <vector>
@@ -155,7 +156,7 @@ class ParticleState {
       out.assign(hv.begin(), hv.end());
     };
     h.element_bytes = sizeof(std::int32_t) * std::size_t(width);
-    raw_copies(h, arr);
+    raw_copies(h, arr, width);
     registry_.add(std::move(h));
   }
 
@@ -222,9 +223,10 @@ class ParticleState {
     registry_.add(std::move(h));
   }
 
-  // The array's bytes as stored, to and from the host (checkpoints, migrations).
+  // The array's bytes as stored (`width` values of T a particle), to and from the host
+  // (checkpoints, migrations).
   template <class T>
-  static void raw_copies(FieldHandle& h, DeviceArray<T, B>& arr) {
+  void raw_copies(FieldHandle& h, DeviceArray<T, B>& arr, int width = 1) {
     h.data = [&arr]() -> void* { return arr.data(); };
     h.to_host_bytes = [&arr](std::vector<unsigned char>& out) {
       out.resize(arr.size() * sizeof(T));
@@ -234,6 +236,30 @@ class ParticleState {
       arr.resize(in.size() / sizeof(T));
       if (!in.empty()) B::upload(arr.data(), in.data(), in.size());
     };
+    h.gather_to_host = [this, &arr, width](const std::vector<int>& idx, std::vector<unsigned char>& out) {
+      DeviceArray<T, B>& tmp = scratch<T>();
+      tmp.resize(idx.size() * std::size_t(width));
+      if (!idx.empty()) {
+        picked_.upload(idx);
+        B::for_each(static_cast<int>(tmp.size()), GatherRows<T>{tmp.data(), arr.data(), picked_.data(), width});
+      }
+      out.resize(tmp.size() * sizeof(T));
+      if (!out.empty()) B::download(out.data(), tmp.data(), out.size());
+    };
+    h.keep_first = [this, &arr, width](int n) { resize_keeping(arr, std::size_t(n) * width, std::size_t(n) * width); };
+    h.place = [this, &arr, width](const std::vector<unsigned char>& in, int at) {
+      const std::size_t first = std::size_t(at) * width, added = in.size() / sizeof(T);
+      resize_keeping(arr, first + added, first);
+      if (added) B::upload(arr.data() + first, in.data(), in.size());
+    };
+  }
+  // `arr` holding `size` values, its first `keep` as they were.
+  template <class T>
+  void resize_keeping(DeviceArray<T, B>& arr, std::size_t size, std::size_t keep) {
+    DeviceArray<T, B>& tmp = scratch<T>();
+    tmp.resize(size);
+    B::copy(tmp.data(), arr.data(), std::min({keep, size, arr.size()}) * sizeof(T));
+    arr.swap(tmp);
   }
 
   template <class T>
@@ -269,6 +295,7 @@ class ParticleState {
   DeviceArray<Real, B> scratch_real_;
   DeviceArray<std::uint8_t, B> scratch_u8_;
   DeviceArray<std::int32_t, B> scratch_i32_;
+  DeviceArray<int, B> picked_;  // the particles a migration gathers (gather_to_host)
 };
 
 }  // namespace psph
