@@ -51,6 +51,7 @@ InSituSession::~InSituSession() = default;
 std::vector<std::string> InSituSession::stage(Engine& e, bool piece) {
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<std::string> missing = stage_frame(e, fields_, frame_, piece);
+  if (piece) agree_components(frame_, comm_);
   staging_s_ += seconds_since(t0);
   return missing;
 }

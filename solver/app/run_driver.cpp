@@ -173,9 +173,14 @@ int RunDriver::start() {
   base.end_time = c_.end_time, base.extracts = extracts_, base.pipelines = insitu_->active();
   base.monitor_interval = dt_mon_, base.extract_interval = dt_ext_, base.visualisation_interval = dt_vis_;
   if (const int code = agreed(root() ? supervise(base) : 0)) return code;
-  const bool first_outputs = wrote([&] { monitor(); }) && wrote([&] {
+  // Both made (the extract is written by every process together), then a failure of one process
+  // alone (monitors.csv, on the first) ends every process: the others would wait for it.
+  const bool monitored = wrote([&] { monitor(); });
+  const bool extracted = wrote([&] {
     if (extracts_) writer_->write(*engine_);
   });
+  const bool first_outputs = monitored && extracted;
+  if (!first_outputs) stop_every_process();
   if (!first_outputs || !insitu_->active()) return 0;  // a failed write: the loop does not start
   try {
     insitu_->start(*engine_, c_, rd_->path(), [&](const std::string& l) { log(l); });

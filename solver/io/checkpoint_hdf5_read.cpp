@@ -13,8 +13,8 @@ class Hdf5Reader {
  public:
   explicit Hdf5Reader(const std::string& path) : path_(path) {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-    file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    if (file_ < 0) fail("a damaged or truncated HDF5 file (" + hdf5_reason() + ")");
+    file_.reset(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+    if (!file_.valid()) fail("a damaged or truncated HDF5 file (" + hdf5_reason() + ")");
     if (!H5Aexists(file_, "format") || text(file_, "format") != kFormat)
       fail(std::string("not a poresph checkpoint (an HDF5 file without the attribute format = \"") + kFormat + "\")");
     const long long version = integer(file_, "format_version");
@@ -22,7 +22,6 @@ class Hdf5Reader {
       fail("checkpoint format_version " + std::to_string(version) + ", this poresph reads version " +
            std::to_string(kFormatVersion) + " (written by poresph " + text(file_, "poresph_version") + ")");
   }
-  ~Hdf5Reader() { H5Fclose(file_); }
   Hdf5Reader(const Hdf5Reader&) = delete;
   Hdf5Reader& operator=(const Hdf5Reader&) = delete;
   hid_t file() const { return file_; }
@@ -57,6 +56,10 @@ class Hdf5Reader {
     if (rank < 0 || rank > 2 || H5Sget_simple_extent_dims(space, dims, nullptr) < 0)
       fail("dataset '" + name + "' has " + std::to_string(rank) + " dimensions, expected 1 or 2");
     count = std::size_t(dims[0]), row_bytes = std::size_t(rank == 2 ? dims[1] : 1) * H5Tget_size(type);
+    const Id stored(H5Dget_type(set), H5Tclose);
+    const double stored_bytes = double(dims[0]) * double(rank == 2 ? dims[1] : 1) * double(H5Tget_size(stored));
+    if (stored_bytes > double(H5Dget_storage_size(set)))  // sizes a damaged header claims, before any allocation
+      fail("dataset '" + name + "' claims more bytes than the file holds for it (damaged)");
     Bytes out(count * row_bytes);
     if (!out.empty() && H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
       fail("dataset '" + name + "' cannot be read (" + hdf5_reason() + ")");
@@ -65,7 +68,7 @@ class Hdf5Reader {
 
  private:
   std::string path_;
-  hid_t file_ = -1;
+  Id file_{-1, H5Fclose};  // closed also when the constructor throws
 };
 
 // The fields' names in the order they were written.

@@ -199,8 +199,9 @@ long long file_bound(const Checkpoint& c, const CheckpointOrigin& o) {
   return bytes;
 }
 
-// The file's room taken on the disk before HDF5 writes in it: a full disk is then said here, not
-// in the middle of HDF5's writes. Empty, or why not.
+// The file's room taken on the disk before HDF5 writes in it, and given back when HDF5 creates
+// the file (MPI-IO truncates it): a disk without room is said here, not in the middle of HDF5's
+// writes; one that another writer fills in between is not. Empty, or why not.
 std::string reserve(const std::string& file, long long bytes) {
   const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) return std::string("cannot create the file: ") + std::strerror(errno);

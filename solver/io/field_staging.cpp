@@ -42,4 +42,11 @@ std::vector<std::string> stage_frame(Engine& e, const std::vector<std::string>& 
   return missing;
 }
 
+void agree_components(ParticleFrame& frame, Communicator& comm) {
+  for (StagedField& f : frame.fields) {
+    const long long comps = comm.max(static_cast<long long>(frame.n > 0 ? f.components : 0));
+    if (frame.n == 0 && comps > 0) f.components = int(comps);
+  }
+}
+
 }  // namespace psph

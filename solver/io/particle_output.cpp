@@ -45,7 +45,7 @@ std::string ParticleWriter::write(Engine& e) {
   if (!missing.empty()) throw std::runtime_error("output.fields: no particle field '" + missing.front() + "'");
   std::string why;
   if (pieces) {
-    agree_components();
+    agree_components(frame_, comm_);
     why = write_piece(path);
     for (const Bytes& b : comm_.all_gather(Bytes(why.begin(), why.end())))  // the first process's failure first
       if (!b.empty()) {
@@ -147,14 +147,6 @@ std::string ParticleWriter::write_piece(const std::string& path) {
   return comm_.rank() == 0 ? list_every_piece(path, comm_.size()) : "";
 }
 
-// A process whose piece is empty cannot tell a vector from a scalar by its size: every process
-// takes the components of those that hold particles.
-void ParticleWriter::agree_components() {
-  for (StagedField& f : frame_.fields) {
-    const long long comps = comm_.max(static_cast<long long>(frame_.n > 0 ? f.components : 0));
-    if (frame_.n == 0 && comps > 0) f.components = int(comps);
-  }
-}
 #endif
 
 void ParticleWriter::write_collection() const {

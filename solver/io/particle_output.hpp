@@ -29,7 +29,6 @@ class ParticleWriter {
  private:
   std::string write_whole(const std::string& path);
   std::string write_piece(const std::string& path);
-  void agree_components();
 
   std::string dir_;
   std::vector<std::string> fields_;

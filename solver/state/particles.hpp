@@ -76,7 +76,10 @@ struct GatherRows {
   const T* in;
   const int* perm;
   int width;
-  PSPH_HD void operator()(int k) const { out[k] = in[std::size_t(perm[k / width]) * width + k % width]; }
+  PSPH_HD void operator()(int i) const {
+    const std::size_t to = std::size_t(i) * width, from = std::size_t(perm[i]) * width;
+    for (int k = 0; k < width; ++k) out[to + k] = in[from + k];
+  }
 };
 
 // index_of_id[id] = -1: no particle with that id here (a run shared out over processes holds
@@ -148,7 +151,7 @@ class ParticleState {
     h.permute = [this, &arr, width](const int* perm) {
       DeviceArray<std::int32_t, B>& tmp = scratch<std::int32_t>();
       tmp.resize(arr.size());
-      B::for_each(static_cast<int>(arr.size()), GatherRows<std::int32_t>{tmp.data(), arr.data(), perm, width});
+      B::for_each(static_cast<int>(arr.size() / std::size_t(width)), GatherRows<std::int32_t>{tmp.data(), arr.data(), perm, width});
       arr.swap(tmp);
     };
     h.to_host_double = [&arr](std::vector<double>& out) {
@@ -241,7 +244,7 @@ class ParticleState {
       tmp.resize(idx.size() * std::size_t(width));
       if (!idx.empty()) {
         picked_.upload(idx);
-        B::for_each(static_cast<int>(tmp.size()), GatherRows<T>{tmp.data(), arr.data(), picked_.data(), width});
+        B::for_each(static_cast<int>(idx.size()), GatherRows<T>{tmp.data(), arr.data(), picked_.data(), width});
       }
       out.resize(tmp.size() * sizeof(T));
       if (!out.empty()) B::download(out.data(), tmp.data(), out.size());
