@@ -8,7 +8,8 @@
 #      family), then `poresph bench --backend cuda --json --profile` (each pass's share too) on the
 #      3D fluid box at 1e6 particles, SPHERIC test 2 at its published 4,989,696 particles, the whole
 #      claystone drainage cell and the fluid box at 1e7, then, while time is left, the other CUDA benchmarks
-#      one by one; where the machine has MPI, a run on 2 processes against one (monitors identical).
+#      one by one; where the machine has MPI, a run on 2 processes against one (monitors identical),
+#      and again with the halos handed to MPI in device memory where its MPI was built with CUDA.
 # Header-only dependencies: toml++ (used header-only), CLI11, nlohmann-json, and GoogleTest's
 # sources (the tests' CMake needs it); Thrust/CUB come with CUDA. They are gathered on a Debian 12
 # machine with `scripts/gpu-deps.sh` into build/gpu-deps (ignored by git, ~3 MiB) and carried with
@@ -180,6 +181,15 @@ if command -v mpirun >/dev/null && grep -q '^MPI_C_FOUND:BOOL=TRUE' "$bdir/CMake
     log "  2 processes: monitors.csv identical to one process's"
   else
     failed+=(shared-run)
+  fi
+  # The halos handed to MPI in device memory (PORESPH_CUDA_AWARE_MPI=1), where this MPI takes it.
+  if ((dry)) || ! ompi_info --parsable --all 2>/dev/null | grep -q 'mpi_built_with_cuda_support:value:true'; then
+    log "  2 processes, CUDA-aware MPI: skipped (a dry run, or this MPI was built without CUDA)"
+  elif phase "2 processes, CUDA-aware MPI" 90 "$out/shared-aware.log" "$out/shared-aware.log" sh -c \
+       "PORESPH_CUDA_AWARE_MPI=1 mpirun -n 2 -x PORESPH_CUDA_AWARE_MPI '$poresph' run '$case2' --backend cuda --quiet --out '$tmp/aware' && cmp '$tmp/one/monitors.csv' '$tmp/aware/monitors.csv'"; then
+    log "  2 processes, CUDA-aware MPI: monitors.csv identical to one process's"
+  else
+    failed+=(shared-run-cuda-aware)
   fi
 else
   log "2 processes: skipped (no mpirun, or the build found no MPI)"

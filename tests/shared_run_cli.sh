@@ -5,7 +5,8 @@
 # tests/checkpoint_h5py.py); so do VTU extracts; a checkpoint of one process restarts on three, one of
 # three on two, and both end as the uninterrupted run; SIGTERM ends every process with a final
 # checkpoint (exit 130); a process killed with SIGKILL ends the job without a hang;
-# a bad case is refused once, before any work, with nothing left behind.
+# a bad case is refused once, before any work, with nothing left behind, and so is device memory
+# asked of an MPI that cannot take it.
 # Usage: shared_run_cli.sh PORESPH MPIEXEC SRC WORK
 set -u
 poresph=$(realpath "$1") mpiexec=$2 src=$(realpath "$3") work=$4
@@ -102,4 +103,17 @@ rc=$?
 [ $rc = 2 ] || fail "refusal: exit $rc, expected 2: $(cat refused.out)"
 [ "$(grep -c 'time.end' refused.out)" = 1 ] || fail "refusal not said once: $(cat refused.out)"
 [ -e refused ] && fail "a refused run left its directory behind"
+# Device memory to MPI (PORESPH_CUDA_AWARE_MPI): a bad value, or asked of an MPI built without
+# CUDA, stops every process before any work, said once, exit 2.
+aware_refused() {  # value, what the message must hold
+  PORESPH_CUDA_AWARE_MPI=$1 "$mpiexec" -n 2 -x PORESPH_CUDA_AWARE_MPI "$poresph" run longer.toml --out aware > aware.out 2>&1
+  rc=$?
+  [ $rc = 2 ] || fail "PORESPH_CUDA_AWARE_MPI=$1: exit $rc, expected 2: $(cat aware.out)"
+  [ "$(grep -c "$2" aware.out)" = 1 ] || fail "PORESPH_CUDA_AWARE_MPI=$1 not refused once: $(cat aware.out)"
+  [ -e aware ] && fail "PORESPH_CUDA_AWARE_MPI=$1 left a run directory"
+}
+aware_refused yes "expected 1"
+if ompi_info --parsable --all 2>/dev/null | grep -q 'mpi_built_with_cuda_support:value:false'; then
+  aware_refused 1 "built without CUDA"
+fi
 echo "shared run command-line tests passed"

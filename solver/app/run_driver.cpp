@@ -473,6 +473,12 @@ nlohmann::json RunDriver::summary(double wall) const {
     j["processes"] = {{"count", sh.processes}, {"rebalances", sh.rebalances}, {"imbalance", sh.imbalance},
                       {"halo_particles", sh.halo_particles}, {"halo_bytes", sh.halo_bytes},
                       {"halo_refreshes", sh.refreshes}};
+  if (sh.processes > 1) {
+    nlohmann::json costs;  // seconds a particle-step where measured, else the static weights
+    for (int c = 0; c < kCostClasses; ++c) costs[cost_class_name(c)] = sh.class_costs.per_particle[c];
+    j["processes"]["class_costs"] = costs;
+    j["processes"]["class_costs_measured"] = sh.class_costs.measured;
+  }
   j["compressibility"] = to_json(compressibility_);
   j["density_deviation"] = {{"bound", w.bound}, {"max", w.peak}, {"max_time", w.peak_time},
                             {"max_step", w.peak_step}, {"first_exceeded", first}};

@@ -1,5 +1,7 @@
 #pragma once
-// Owning array in a backend's memory (host memory for the CPU backend, cudaMalloc for CUDA).
+// Owning array in a backend's memory (host memory for the CPU backend, cudaMalloc for CUDA). Its
+// allocation only grows: a resize within it keeps the values in place (a process's share of a
+// run shrinks and grows at every migration: parallel/particle_domain.hpp).
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -14,22 +16,29 @@ class DeviceArray {
   ~DeviceArray() { B::release(ptr_); }
   DeviceArray(const DeviceArray&) = delete;
   DeviceArray& operator=(const DeviceArray&) = delete;
-  DeviceArray(DeviceArray&& o) noexcept : ptr_(std::exchange(o.ptr_, nullptr)), n_(std::exchange(o.n_, 0)) {}
+  DeviceArray(DeviceArray&& o) noexcept
+      : ptr_(std::exchange(o.ptr_, nullptr)), n_(std::exchange(o.n_, 0)), cap_(std::exchange(o.cap_, 0)) {}
   DeviceArray& operator=(DeviceArray&& o) noexcept {
-    std::swap(ptr_, o.ptr_);
-    std::swap(n_, o.n_);
+    swap(o);
     return *this;
   }
 
+  // `n` values; those within the allocation keep their place, a larger size loses every value.
   void resize(std::size_t n) {
-    if (n == n_) return;
+    reserve(n);
+    n_ = n;
+  }
+  // An allocation of at least `n` values; a larger one than today's loses every value.
+  void reserve(std::size_t n) {
+    if (n <= cap_) return;
     B::release(ptr_);
     ptr_ = static_cast<T*>(B::allocate(n * sizeof(T)));
-    n_ = n;
+    cap_ = n, n_ = 0;
   }
   void swap(DeviceArray& o) noexcept {
     std::swap(ptr_, o.ptr_);
     std::swap(n_, o.n_);
+    std::swap(cap_, o.cap_);
   }
   void upload(const std::vector<T>& h) {
     resize(h.size());
@@ -49,10 +58,11 @@ class DeviceArray {
   T* data() { return ptr_; }
   const T* data() const { return ptr_; }
   std::size_t size() const { return n_; }
+  std::size_t capacity() const { return cap_; }
 
  private:
   T* ptr_ = nullptr;
-  std::size_t n_ = 0;
+  std::size_t n_ = 0, cap_ = 0;
 };
 
 }  // namespace psph

@@ -118,6 +118,18 @@ class ProfileRecording {
   ProfileFocus before_;
 };
 
+// The launches while it lives are not recorded (a machinery's inner launches, timed as a whole).
+class ProfilePause {
+ public:
+  ProfilePause() : before_(profile_focus().profile) { profile_focus().profile = nullptr; }
+  ~ProfilePause() { profile_focus().profile = before_; }
+  ProfilePause(const ProfilePause&) = delete;
+  ProfilePause& operator=(const ProfilePause&) = delete;
+
+ private:
+  PassProfile* before_;
+};
+
 // The launches while it lives are the stage `name`'s (a string literal).
 class StageScope {
  public:

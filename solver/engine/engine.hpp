@@ -11,6 +11,7 @@
 #include "rigid/rigid_bodies.hpp"
 #include "engine/scene.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/particle_cost.hpp"
 #include "stage/monitor_value.hpp"
 #include "state/checkpoint.hpp"
 
@@ -33,6 +34,7 @@ struct SharingStats {
   long long halo_particles = 0;
   long long halo_bytes = 0;  // sent by every process in halo refreshes, to the last statistics (stats())
   long long refreshes = 0;   // halo refreshes of one process, likewise
+  ClassCosts class_costs;    // what the cuts weigh each particle class (parallel/particle_cost.hpp)
 };
 
 class Engine {

@@ -49,6 +49,24 @@ class BusyClock {
   double waited0_;
 };
 
+// Seconds since start() less the time spent waiting for other processes meanwhile.
+class BusyTime {
+ public:
+  void start(const Communicator& comm) {
+    comm_ = &comm, t0_ = std::chrono::steady_clock::now(), waited0_ = comm.seconds_in_calls();
+  }
+  double seconds() const {
+    if (!comm_) return 0;
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count() -
+           (comm_->seconds_in_calls() - waited0_);
+  }
+
+ private:
+  const Communicator* comm_ = nullptr;
+  std::chrono::steady_clock::time_point t0_;
+  double waited0_ = 0;
+};
+
 template <int D, class B>
 class Simulation final : public Engine {
  public:
@@ -90,6 +108,11 @@ class Simulation final : public Engine {
   void step(double t_stop) override {
     const ProfileRecording recording(profile_);
     const BusyClock busy(busy_, comm_);
+    advance(t_stop);
+  }
+
+ private:
+  void advance(double t_stop) {
     const double dt = next_dt(t_stop);
     ramp(t_ + dt);  // the forces evaluated in this step are those at its end
     open_.buffer_velocity(cx_, dt);
@@ -120,6 +143,8 @@ class Simulation final : public Engine {
     dt_ = dt;
     check_health();
   }
+
+ public:
 
   std::vector<double> field(const std::string& name) override {
     elastic_.prepare_field(cx_, name, steps_);
@@ -166,8 +191,20 @@ class Simulation final : public Engine {
 
  private:
   // The initial state: lists, densities (the walls' reference density from a first summation),
-  // forces.
+  // forces. A shared run measures its particle classes' costs in the force evaluation after its
+  // last list build, and cuts the domain with them (parallel/cost_calibration.hpp): nothing has
+  // moved, so the lists built again are those of the first build.
   void start() {
+    measure_costs_ = domain_ != nullptr;
+    initial_state();
+    if (!measure_costs_) return;
+    sharing_.class_costs = calibration_->costs(comm_, cost_clock_.seconds());
+    measure_costs_ = false, cx_.calibration = nullptr, calibration_.reset();
+    if (!sharing_.class_costs.measured) return;
+    measured_cut_due_ = true;
+    rebuild();
+  }
+  void initial_state() {
     if (cx_.fluid) {
       open_.convert_inlet(cx_);
       if (cx_.continuity) {
@@ -238,10 +275,12 @@ class Simulation final : public Engine {
   // A run shared out over processes first moves particles to their owners and gathers the halo
   // again (parallel/particle_domain.hpp).
   void rebuild(bool every_particle = false) {
+    if (measure_costs_) begin_cost_measurement();
     damage_.retire_ghosts(cx_);  // the damage ghosts leave the lists (damage/ghosts.hpp)
     if (domain_) domain_->redistribute(cx_.s, rebalance_costs());
     cx_.neighbours.build(cx_.s, cx_.grid, cx_.mats, cx_.list_needs(), every_particle);
     if (domain_) plan_halo(), cx_.halo_fresh();
+    if (calibration_) calibration_->classify(cost_classes()), cx_.calibration = calibration_.get(), cost_clock_.start(comm_);
     elastic_.lists_built(cx_);
   }
   void ramp(double t) {
@@ -254,7 +293,9 @@ class Simulation final : public Engine {
   void share_out(const Scene& sc);
   void plan_halo();
   const OrderSlices& output_slices();
-  std::vector<double> particle_costs() const;
+  std::vector<std::uint8_t> cost_classes(bool whole = false) const;
+  std::vector<double> particle_costs(bool whole = false) const;
+  void begin_cost_measurement();
   std::vector<double> rebalance_costs();
   std::vector<long long> output_order() const;
   std::vector<std::uint8_t> owned_flags() const;
@@ -273,6 +314,10 @@ class Simulation final : public Engine {
   int particles_ = 0;  // of the whole run
   double halo_width_ = 0;
   double busy_ = 0;    // seconds in step() since the last list build
+  std::unique_ptr<CostCalibration<B>> calibration_;  // a shared run's first steps
+  BusyTime cost_clock_;              // since the measurement began
+  bool measure_costs_ = false;       // in the initial state of a shared run
+  bool measured_cut_due_ = false;    // the costs were measured: cut with them at the next list build
   SharingStats sharing_;
   StepContext<D, B> cx_;
   InterfaceStage<D, B> interface_;

@@ -60,17 +60,39 @@ void Simulation<D, B>::share_out(const Scene& sc) {
   for (int k = 0; k < D; ++k) box.lo[k] = sc.lower[k], box.hi[k] = sc.upper[k], periodic[k] = sc.periodic[k];
   domain_ = std::make_unique<ParticleDomain<D, B>>(comm_, box, periodic);
   halo_width_ = cx_.neighbours.radius() + halo_reach(sc);  // every neighbour in the lists, and beyond
-  domain_->split(cx_.s, particle_costs(), halo_width_);
+  domain_->split(cx_.s, particle_costs(true), halo_width_);
   cx_.domain = domain_.get();
 }
 
-// Each particle's share of a step's cost, which the decomposition balances (parallel/particle_cost.hpp).
+// Each particle's class (parallel/particle_cost.hpp); kCostClasses for a halo copy. `whole`: every
+// particle is here, before lists (a first share): each counts, a wall as near the fluid.
 template <int D, class B>
-std::vector<double> Simulation<D, B>::particle_costs() const {
+std::vector<std::uint8_t> Simulation<D, B>::cost_classes(bool whole) const {
   const std::vector<std::uint8_t> mat = cx_.s.material.host();
-  std::vector<double> cost(mat.size());
-  for (std::size_t i = 0; i < mat.size(); ++i) cost[i] = particle_cost(cx_.mats.m[mat[i]].kind);
+  const std::vector<std::uint8_t> near = whole ? std::vector<std::uint8_t>(mat.size(), 1) : cx_.s.near_fluid.host();
+  const std::vector<std::uint8_t> own = whole ? near : owned_flags();
+  std::vector<std::uint8_t> klass(mat.size());
+  for (std::size_t i = 0; i < mat.size(); ++i)
+    klass[i] = own[i] ? std::uint8_t(cost_class(cx_.mats.m[mat[i]].kind, near[i] != 0)) : std::uint8_t(kCostClasses);
+  return klass;
+}
+
+// Each particle's share of a step's cost, which the decomposition balances: its class's.
+template <int D, class B>
+std::vector<double> Simulation<D, B>::particle_costs(bool whole) const {
+  const std::vector<std::uint8_t> klass = cost_classes(whole);
+  std::vector<double> cost(klass.size(), 0.0);
+  for (std::size_t i = 0; i < klass.size(); ++i)
+    if (klass[i] < kCostClasses) cost[i] = sharing_.class_costs.per_particle[klass[i]];
   return cost;
+}
+
+// The costs measured anew after this list build (the initial state's last one counts): from the
+// particles' classification, after the sort.
+template <int D, class B>
+void Simulation<D, B>::begin_cost_measurement() {
+  cx_.calibration = nullptr;
+  calibration_ = std::make_unique<CostCalibration<B>>();
 }
 
 // After a sort: the halo's plan, and the run's particle count.
@@ -101,6 +123,10 @@ void Simulation<D, B>::plan_halo() {
 template <int D, class B>
 std::vector<double> Simulation<D, B>::rebalance_costs() {
   constexpr double kMinBusy = 1.0;  // seconds of steps before a verdict
+  if (measured_cut_due_) {
+    measured_cut_due_ = false, busy_ = 0, ++sharing_.rebalances;
+    return particle_costs();
+  }
   const double slowest = comm_.max(busy_);
   ExactSum total;
   total.add(busy_);
@@ -245,10 +271,7 @@ const OrderSlices& Simulation<D, B>::output_slices() {
 // Told by the one process that knows it (its owner), to every process.
 template <int D, class B>
 std::string Simulation<D, B>::from_owner(const std::string& mine) {
-  std::string out;
-  for (const Bytes& b : comm_.all_gather(Bytes(mine.begin(), mine.end())))
-    if (!b.empty()) out.assign(b.begin(), b.end());
-  return out;
+  return first_message(comm_, mine);
 }
 
 template <int D, class B>
@@ -323,7 +346,7 @@ void Simulation<D, B>::restore(const Checkpoint& c) {
     if (const CheckpointField* cf = c.field(f.info.name)) f.from_host_bytes(cf->bytes);
   if (domain_) {  // every particle is here: this process keeps its share, cut anew
     cx_.s.set_count(n);
-    domain_->split(cx_.s, particle_costs(), halo_width_);
+    domain_->split(cx_.s, particle_costs(true), halo_width_);
   }
   rigid_.load(c);
   elastic_.load(c);

@@ -233,10 +233,9 @@ void write_together(const std::string& path, const Checkpoint& c, const Checkpoi
     why = w.why();
   }
   // Every process's outcome: the first failure, with the process that had it.
-  std::string verdict;
-  const std::vector<Bytes> all = comm.all_gather(Bytes(why.begin(), why.end()));
-  for (std::size_t r = 0; r < all.size() && verdict.empty(); ++r)
-    if (!all[r].empty()) verdict = path + ": " + std::string(all[r].begin(), all[r].end()) + " (process " + std::to_string(r) + ")";
+  int from = -1;
+  const std::string first = first_message(comm, why, &from);
+  std::string verdict = first.empty() ? "" : path + ": " + first + " (process " + std::to_string(from) + ")";
   if (comm.rank() == 0) {
     if (!verdict.empty()) {
       ::unlink(partial.c_str());

@@ -46,12 +46,7 @@ std::string ParticleWriter::write(Engine& e) {
   std::string why;
   if (pieces) {
     agree_components(frame_, comm_);
-    why = write_piece(path);
-    for (const Bytes& b : comm_.all_gather(Bytes(why.begin(), why.end())))  // the first process's failure first
-      if (!b.empty()) {
-        why.assign(b.begin(), b.end());
-        break;
-      }
+    why = first_message(comm_, write_piece(path));  // the first process's failure
   } else {
     why = write_whole(path);
   }

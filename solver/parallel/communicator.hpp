@@ -27,6 +27,17 @@ class Communicator {
   virtual long long sum(long long x) { return x; }
   // send[r] goes to process r; recv[q] is what process q sent here (sizes known to no one before).
   virtual void exchange(const std::vector<Bytes>& send, std::vector<Bytes>& recv) { recv = send; }
+  // Bytes whose sizes both sides know (a halo planned at the last list build): send_bytes[r] of
+  // `send` (laid out process after process) to process r, recv_bytes[q] from process q into `recv`
+  // (likewise). Only the processes with something to send or receive are addressed. Host memory,
+  // or the backend's device memory where device_memory() says so.
+  virtual void exchange_known(const unsigned char* send, const std::vector<std::size_t>& send_bytes,
+                              unsigned char* recv, const std::vector<std::size_t>& recv_bytes);
+  // Whether exchange_known takes device memory: a CUDA-aware MPI, asked for with
+  // PORESPH_CUDA_AWARE_MPI=1 (off by default: the halos are staged through the host).
+  virtual bool device_memory() const { return false; }
+  // Why PORESPH_CUDA_AWARE_MPI=1 cannot be honoured; empty where it can or was not asked for.
+  virtual std::string device_memory_refusal() const { return ""; }
   // Process `root`'s bytes, on every process.
   virtual void broadcast(Bytes&, int /*root*/) {}
   // Every process's bytes, on every process.
@@ -45,6 +56,10 @@ class Communicator {
   // Seconds spent in the calls above since the start (waiting for other processes included).
   virtual double seconds_in_calls() const { return 0; }
 };
+
+// The first non-empty message of the processes, by rank, on every process (empty if none);
+// `from`, if given, its process (-1 if none). Every process calls.
+std::string first_message(Communicator& comm, const std::string& mine, int* from = nullptr);
 
 // The process's communicator: MPI's world when launched by mpirun/srun (and built with MPI),
 // otherwise one process. Initialises MPI on first use.

@@ -4,8 +4,12 @@
 #define OMPI_SKIP_MPICXX 1  // the C API only (the C++ bindings are deprecated and not linked)
 #define MPICH_SKIP_MPICXX 1
 #include <mpi.h>
+#if defined(OPEN_MPI) && OPEN_MPI
+#include <mpi-ext.h>  // MPIX_CUDA_AWARE_SUPPORT, MPIX_Query_cuda_support
+#endif
 
 #include <climits>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -50,6 +54,7 @@ class MpiCommunicator final : public Communicator {
     threads_ = provided >= MPI_THREAD_MULTIPLE;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    ask_device_memory();
   }
   int rank() const override { return rank_; }
   int size() const override { return size_; }
@@ -124,6 +129,30 @@ class MpiCommunicator final : public Communicator {
     for (int r = 0; r < size_; ++r) recv[r].assign(in.begin() + rdispl[r], in.begin() + rdispl[r] + rcount[r]);
   }
 
+  void exchange_known(const unsigned char* send, const std::vector<std::size_t>& send_bytes, unsigned char* recv,
+                      const std::vector<std::size_t>& recv_bytes) override {
+    const CallClock clock(seconds_);
+    constexpr int kTag = 52;  // one exchange at a time: messages of a pair arrive in order
+    std::vector<MPI_Request> req;
+    std::size_t at = 0;
+    for (int q = 0; q < size_; ++q) {
+      if (!recv_bytes[q]) continue;
+      req.emplace_back();
+      check(MPI_Irecv(recv + at, bytes_count(recv_bytes[q]), MPI_BYTE, q, kTag, MPI_COMM_WORLD, &req.back()), "MPI_Irecv");
+      at += recv_bytes[q];
+    }
+    at = 0;
+    for (int r = 0; r < size_; ++r) {
+      if (!send_bytes[r]) continue;
+      req.emplace_back();
+      check(MPI_Isend(send + at, bytes_count(send_bytes[r]), MPI_BYTE, r, kTag, MPI_COMM_WORLD, &req.back()), "MPI_Isend");
+      at += send_bytes[r];
+    }
+    check(MPI_Waitall(int(req.size()), req.data(), MPI_STATUSES_IGNORE), "MPI_Waitall");
+  }
+  bool device_memory() const override { return device_memory_; }
+  std::string device_memory_refusal() const override { return refusal_; }
+
   void broadcast(Bytes& bytes, int root) override {
     const CallClock clock(seconds_);
     long long n = static_cast<long long>(bytes.size());
@@ -155,7 +184,29 @@ class MpiCommunicator final : public Communicator {
   }
 
  private:
+  // PORESPH_CUDA_AWARE_MPI=1: device buffers straight to MPI, where this MPI says it takes them
+  // (OpenMPI: MPIX_Query_cuda_support); an MPI that does not say is trusted.
+  void ask_device_memory() {
+    const char* ask = std::getenv("PORESPH_CUDA_AWARE_MPI");
+    if (!ask || std::string(ask) == "0" || std::string(ask).empty()) return;
+    if (std::string(ask) != "1") {
+      refusal_ = "PORESPH_CUDA_AWARE_MPI='" + std::string(ask) + "': expected 1 (device memory to MPI) or 0";
+      return;
+    }
+#if defined(MPIX_CUDA_AWARE_SUPPORT) && MPIX_CUDA_AWARE_SUPPORT
+    if (MPIX_Query_cuda_support() != 1)
+      refusal_ = "PORESPH_CUDA_AWARE_MPI=1, but this MPI's library was started without CUDA support "
+                 "(MPIX_Query_cuda_support() = 0); unset it to stage the halos through the host";
+#elif defined(MPIX_CUDA_AWARE_SUPPORT)
+    refusal_ = "PORESPH_CUDA_AWARE_MPI=1, but this MPI was built without CUDA support (MPIX_CUDA_AWARE_SUPPORT 0); "
+               "unset it to stage the halos through the host";
+#endif
+    device_memory_ = refusal_.empty();
+  }
+
   int rank_ = 0, size_ = 1;
+  bool device_memory_ = false;
+  std::string refusal_;
   MPI_Comm world_;
   bool threads_ = false;  // MPI_THREAD_MULTIPLE provided
   double seconds_ = 0;

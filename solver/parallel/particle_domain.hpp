@@ -23,7 +23,7 @@ template <int D, class B>
 class ParticleDomain {
  public:
   ParticleDomain(Communicator& comm, const Box& domain, const std::array<bool, 3>& periodic)
-      : comm_(comm), cuts_(D, domain, periodic) {}
+      : comm_(comm), cuts_(D, domain, periodic), device_exchange_(!B::host_memory && comm.device_memory()) {}
 
   Communicator& comm() { return comm_; }
   const Decomposition& decomposition() const { return cuts_; }
@@ -57,6 +57,7 @@ class ParticleDomain {
   void redistribute(ParticleState<D, B>& s, const std::vector<double>& cost = {}) {
     static const std::string what = "migration and halo (processes)";
     const HostPassClock clock(what);  // in the run's profile, beside the passes
+    const ProfilePause inner;
     const std::vector<double> x = positions(s);
     const std::vector<std::uint8_t> own = owned_.host();
     const int me = comm_.rank(), n = s.size();
@@ -73,7 +74,7 @@ class ParticleDomain {
       (o == me ? order : rest).push_back(i);
       if (o >= 0 && o != me) go[o].push_back(i);
     }
-    const HostFields migrants = receive(HostFieldsOf{s}, go);
+    const HostFields migrants = receive(s, go);
     const int stay = int(order.size());
     std::vector<double> mine(std::size_t(stay) * D);  // the positions of the particles kept, then of the migrants
     for (int k = 0; k < stay; ++k)
@@ -92,7 +93,7 @@ class ParticleDomain {
       cuts_.parts_near(&mine[std::size_t(i) * D], width_, me, near);
       for (int r : near) copies[r].push_back(i);
     }
-    const HostFields halo = receive(HostFieldsOf{s}, copies);
+    const HostFields halo = receive(s, copies);
     halo.place(s, owned);
     s.set_count(owned + halo.count());
   }
@@ -119,6 +120,12 @@ class ParticleDomain {
       for (int r : near) send_[r].push_back(i);
     }
     owned_.upload(own);
+    std::vector<int> all;
+    for (const auto& l : send_) all.insert(all.end(), l.begin(), l.end());
+    send_index_.upload(all);
+    all.clear();
+    for (const auto& l : recv_) all.insert(all.end(), l.begin(), l.end());
+    recv_index_.upload(all);
   }
 
   // The halo's values of one field from their owners.
@@ -231,10 +238,6 @@ class ParticleDomain {
       }
       n_ += m;
     }
-    void append(const HostFields& o) {
-      for (std::size_t f = 0; f < elem_.size(); ++f) data_[f].insert(data_[f].end(), o.data_[f].begin(), o.data_[f].end());
-      n_ += o.n_;
-    }
     std::vector<double> positions() const {
       std::vector<double> x(std::size_t(n_) * D);
       const Real* r = reinterpret_cast<const Real*>(data_[xfield_].data());
@@ -260,63 +263,68 @@ class ParticleDomain {
     int xfield_ = 0, n_ = 0;
   };
 
-  // The particles of a state, gathered on the device as they are asked for.
-  struct HostFieldsOf {
-    const ParticleState<D, B>& s;
-    HostFields subset(const std::vector<int>& idx) const { return HostFields(s, idx); }
-    HostFields empty_like() const { return HostFields(s, {}); }
-  };
-
-  // Sends to[r]'s particles of `from` (HostFields or HostFieldsOf) to process r; what every
-  // process sent here.
-  template <class Source>
-  HostFields receive(const Source& from, const std::vector<std::vector<int>>& to) {
+  // Sends to[r]'s particles of `s` (gathered on the device) to process r; what every process sent here.
+  HostFields receive(const ParticleState<D, B>& s, const std::vector<std::vector<int>>& to) {
     std::vector<Bytes> send(comm_.size()), recv;
     for (int r = 0; r < comm_.size(); ++r)
-      if (!to[r].empty()) send[r] = from.subset(to[r]).pack();
+      if (!to[r].empty()) send[r] = HostFields(s, to[r]).pack();
     comm_.exchange(send, recv);
-    HostFields got = from.empty_like();
+    HostFields got(s, {});
     for (int q = 0; q < comm_.size(); ++q)
       if (!recv[q].empty()) got.append_packed(recv[q], q);
     return got;
   }
 
-  // In place where the backend's memory is the host's; through a host copy otherwise.
+  // Packed on the backend (the values of send_index_), exchanged with the neighbouring processes
+  // only, unpacked at recv_index_. A device's bytes go through the host unless MPI takes device
+  // memory (Communicator::device_memory).
   void refresh_raw(unsigned char* a, std::size_t elem, std::size_t n, const char* what) {
     static const std::string refresh = "halo refresh (processes)";
     const HostPassClock clock(refresh);
+    const ProfilePause inner;
     if (n != owned_.size())
       throw std::logic_error(std::string("halo of '") + what + "': " + std::to_string(n) + " values for " +
                              std::to_string(owned_.size()) + " particles");
-    if constexpr (B::host_memory) {
-      refresh_bytes(a, elem, what);
+    const int out = int(send_index_.size()), in = int(recv_index_.size());
+    send_buf_.resize(std::size_t(out) * elem), recv_buf_.resize(std::size_t(in) * elem);
+    if (out) B::for_each(out, PackBytes{a, send_buf_.data(), send_index_.data(), elem});
+    std::vector<std::size_t> sb(comm_.size()), rb(comm_.size());
+    for (int r = 0; r < comm_.size(); ++r) sb[r] = send_[r].size() * elem, rb[r] = recv_[r].size() * elem;
+    if (B::host_memory || device_exchange_) {
+      B::synchronize();  // the packing done before MPI reads it
+      comm_.exchange_known(send_buf_.data(), sb, recv_buf_.data(), rb);
     } else {
-      Bytes h(n * elem);
-      if (n) B::download(h.data(), a, h.size());
-      refresh_bytes(h.data(), elem, what);
-      if (n) B::upload(a, h.data(), h.size());
+      host_out_.resize(send_buf_.size()), host_in_.resize(recv_buf_.size());
+      if (out) B::download(host_out_.data(), send_buf_.data(), host_out_.size());
+      comm_.exchange_known(host_out_.data(), sb, host_in_.data(), rb);
+      if (in) B::upload(recv_buf_.data(), host_in_.data(), host_in_.size());
     }
+    if (in) B::for_each(in, UnpackBytes{a, recv_buf_.data(), recv_index_.data(), elem});
+    halo_bytes_ += static_cast<long long>(send_buf_.size());
+    ++refreshes_;
   }
 
-  void refresh_bytes(unsigned char* data, std::size_t elem, const char* what) {
-    std::vector<Bytes> send(comm_.size()), recv;
-    for (int r = 0; r < comm_.size(); ++r) {
-      send[r].resize(send_[r].size() * elem);
-      for (std::size_t k = 0; k < send_[r].size(); ++k)
-        std::memcpy(send[r].data() + k * elem, data + std::size_t(send_[r][k]) * elem, elem);
+  // A halo's values, particle by particle, into and out of a contiguous buffer.
+  struct PackBytes {
+    const unsigned char* from;
+    unsigned char* to;
+    const int* index;
+    std::size_t elem;
+    PSPH_HD void operator()(int k) const {
+      const unsigned char* src = from + std::size_t(index[k]) * elem;
+      for (std::size_t b = 0; b < elem; ++b) to[std::size_t(k) * elem + b] = src[b];
     }
-    for (const Bytes& b : send) halo_bytes_ += static_cast<long long>(b.size());
-    ++refreshes_;
-    comm_.exchange(send, recv);
-    for (int q = 0; q < comm_.size(); ++q) {
-      if (recv[q].size() != recv_[q].size() * elem)
-        throw std::logic_error(std::string("halo of '") + what + "' from process " + std::to_string(q) + ": " +
-                               std::to_string(recv[q].size() / std::max<std::size_t>(elem, 1)) + " values for " +
-                               std::to_string(recv_[q].size()) + " particles");
-      for (std::size_t k = 0; k < recv_[q].size(); ++k)
-        std::memcpy(data + std::size_t(recv_[q][k]) * elem, recv[q].data() + k * elem, elem);
+  };
+  struct UnpackBytes {
+    unsigned char* to;
+    const unsigned char* from;
+    const int* index;
+    std::size_t elem;
+    PSPH_HD void operator()(int k) const {
+      unsigned char* dst = to + std::size_t(index[k]) * elem;
+      for (std::size_t b = 0; b < elem; ++b) dst[b] = from[std::size_t(k) * elem + b];
     }
-  }
+  };
 
   bool near_me(const double* x) const { return cuts_.distance2(x, cuts_.box(comm_.rank())) < width_ * width_; }
 
@@ -333,6 +341,10 @@ class ParticleDomain {
   double width_ = 0;
   DeviceArray<std::uint8_t, B> owned_;
   DeviceArray<int, B> perm_;  // a migration's order: the staying particles first
+  DeviceArray<int, B> send_index_, recv_index_;  // the halo's particles, process after process
+  DeviceArray<unsigned char, B> send_buf_, recv_buf_;
+  Bytes host_out_, host_in_;  // the staging of a device's halo through the host
+  bool device_exchange_;      // MPI takes the device's buffers (CUDA-aware)
   int owned_count_ = 0;
   std::vector<std::vector<int>> send_, recv_;
   long long halo_bytes_ = 0, refreshes_ = 0;

@@ -14,6 +14,7 @@
 #include "core/fluid_table.hpp"
 #include "kernels/kernel.hpp"
 #include "neighbours/neighbour_stage.hpp"
+#include "parallel/cost_calibration.hpp"
 #include "parallel/owned_terms.hpp"
 #include "parallel/particle_domain.hpp"
 #include "stage/pass_context.hpp"
@@ -95,13 +96,20 @@ struct StepContext {
     if (!domain) return B::for_each(n(), pass);
     if constexpr (DeclaresFields<F>::value) {
       refresh_reads<F>();
-      B::for_each(n(), OwnedPass<F>{pass, domain->owned()});
+      run_owned(pass);
       for (int k = 0; k < F::writes.count; ++k) written(F::writes.names[k]);
     } else {
       for (const auto& f : s.fields().all()) refresh(f.info.name.c_str());
-      B::for_each(n(), OwnedPass<F>{pass, domain->owned()});
+      run_owned(pass);
       for (const auto& f : s.fields().all()) written(f.info.name.c_str());
     }
+  }
+
+  // A pass on the owned particles; while the particle classes' costs are measured, once per class.
+  template <class F>
+  void run_owned(const F& pass) {
+    if (calibration && calibration->fits(n())) calibration->run(n(), pass);
+    else B::for_each(n(), OwnedPass<F>{pass, domain->owned()});
   }
 
   // The fields that F (a pass or a reduction) declares it reads of its neighbours.
@@ -135,6 +143,7 @@ struct StepContext {
   void halo_fresh() { stale_.clear(); }
   const std::uint8_t* owned() const { return domain ? domain->owned() : nullptr; }
   ParticleDomain<D, B>* domain = nullptr;  // null on one process
+  CostCalibration<B>* calibration = nullptr;  // a shared run's first steps only
   std::vector<std::string> stale_;          // fields whose halo values are not their owners'
 };
 

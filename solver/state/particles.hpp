@@ -256,10 +256,13 @@ class ParticleState {
       if (added) B::upload(arr.data() + first, in.data(), in.size());
     };
   }
-  // `arr` holding `size` values, its first `keep` as they were.
+  // `arr` holding `size` values, its first `keep` as they were: in place within its allocation,
+  // otherwise copied into a larger one, with room for the next migrations' growth.
   template <class T>
   void resize_keeping(DeviceArray<T, B>& arr, std::size_t size, std::size_t keep) {
+    if (size <= arr.capacity()) return arr.resize(size);
     DeviceArray<T, B>& tmp = scratch<T>();
+    tmp.reserve(size + size / 8);
     tmp.resize(size);
     B::copy(tmp.data(), arr.data(), std::min({keep, size, arr.size()}) * sizeof(T));
     arr.swap(tmp);
