@@ -31,7 +31,7 @@ TEST(CostCalibration, SplitLaunchesGiveTheSameNumbersAndRankTheClasses) {
   std::vector<std::uint8_t> klass(n);
   for (int i = 0; i < n; ++i) klass[i] = i % 3 == 0 ? kFluidCost : i % 3 == 1 ? kWallNearFluidCost : kWallFarCost;
   klass[5] = kCostClasses;  // a halo copy: no pass runs on it
-  const int rounds[kCostClasses + 1] = {400, 0, 0, 40, 0, 0};
+  const int rounds[kCostClasses + 1] = {2000, 0, 0, 200, 0, 0};
   std::vector<double> whole(n, -1), split(n, -1);
   for (int i = 0; i < n; ++i)
     if (klass[i] < kCostClasses) UnevenPass{klass.data(), rounds, whole.data()}(i);
@@ -39,13 +39,13 @@ TEST(CostCalibration, SplitLaunchesGiveTheSameNumbersAndRankTheClasses) {
   CostCalibration<CpuBackend> cal;
   cal.classify(klass);
   ASSERT_TRUE(cal.fits(n));
-  cal.run(n, UnevenPass{klass.data(), rounds, split.data()});
+  for (int k = 0; k < 5; ++k) cal.run(n, UnevenPass{klass.data(), rounds, split.data()});  // timings summed
   EXPECT_EQ(split, whole);  // the halo copy untouched, every other particle as one launch gives it
 
   Communicator one;
   const ClassCosts c = cal.costs(one, 0.0);
   ASSERT_TRUE(c.measured);
-  EXPECT_GT(c.per_particle[kFluidCost], 3 * c.per_particle[kWallNearFluidCost]);
+  EXPECT_GT(c.per_particle[kFluidCost], 2 * c.per_particle[kWallNearFluidCost]);  // 10 x the work
   EXPECT_GT(c.per_particle[kWallNearFluidCost], c.per_particle[kWallFarCost]);
   // Classes the particles do not hold: their static weight against the fluid's measured cost.
   EXPECT_DOUBLE_EQ(c.per_particle[kSolidCost], c.per_particle[kFluidCost]);

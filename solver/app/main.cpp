@@ -112,10 +112,13 @@ int main(int argc, char** argv) {
   // A command over several processes (mpirun) speaks through the first one: the others compute
   // the same and stay silent (a process that fails alone says so on stderr's descriptor directly).
   if (psph::launched_by_mpi() && psph::world().rank() != 0) std::cout.rdbuf(nullptr), std::cerr.rdbuf(nullptr);
-  if (psph::launched_by_mpi() && !psph::world().device_memory_refusal().empty()) {
-    std::cerr << "poresph: " << psph::world().device_memory_refusal() << "\n";
-    psph::finalise_world();
-    return 2;
+  if (psph::launched_by_mpi()) {  // every process refuses if one does (their settings may differ)
+    const std::string refusal = psph::first_message(psph::world(), psph::world().device_memory_refusal());
+    if (!refusal.empty()) {
+      std::cerr << "poresph: " << refusal << "\n";
+      psph::finalise_world();
+      return 2;
+    }
   }
   const auto dispatch = [&]() -> int {
     if (*run) return psph::cmd_run(case_path, ro);

@@ -30,10 +30,13 @@ class DeviceArray {
   }
   // An allocation of at least `n` values; a larger one than today's loses every value.
   void reserve(std::size_t n) {
-    if (n <= cap_) return;
-    B::release(ptr_);
-    ptr_ = static_cast<T*>(B::allocate(n * sizeof(T)));
-    cap_ = n, n_ = 0;
+    if (n > cap_) reallocate(n);
+  }
+  // `n` values in an allocation of about their size (a process's first share of a whole run: the
+  // whole run's allocation is given back); the values are lost where it is reallocated.
+  void fit(std::size_t n) {
+    if (n > cap_ || cap_ > 2 * n + 64) reallocate(n);
+    n_ = n;
   }
   void swap(DeviceArray& o) noexcept {
     std::swap(ptr_, o.ptr_);
@@ -61,6 +64,12 @@ class DeviceArray {
   std::size_t capacity() const { return cap_; }
 
  private:
+  void reallocate(std::size_t n) {
+    T* fresh = static_cast<T*>(B::allocate(n * sizeof(T)));  // before the release: a failure keeps the old one
+    B::release(ptr_);
+    ptr_ = fresh, cap_ = n, n_ = 0;
+  }
+
   T* ptr_ = nullptr;
   std::size_t n_ = 0, cap_ = 0;
 };

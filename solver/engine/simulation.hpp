@@ -200,9 +200,10 @@ class Simulation final : public Engine {
     if (!measure_costs_) return;
     sharing_.class_costs = calibration_->costs(comm_, cost_clock_.seconds());
     measure_costs_ = false, cx_.calibration = nullptr, calibration_.reset();
-    if (!sharing_.class_costs.measured) return;
-    measured_cut_due_ = true;
-    rebuild();
+    measured_cut_due_ = sharing_.class_costs.measured;
+    // Damage ghosts made at t = 0 enter the lists at the first step's build, as on one process:
+    // the cut waits for it.
+    if (measured_cut_due_ && !damage_.ghosts_pending(cx_)) rebuild();
   }
   void initial_state() {
     if (cx_.fluid) {

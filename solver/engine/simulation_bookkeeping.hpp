@@ -344,6 +344,7 @@ void Simulation<D, B>::restore(const Checkpoint& c) {
   if (!rigid.empty()) throw std::invalid_argument("the checkpoint " + rigid);
   for (const auto& f : cx_.s.fields().all())
     if (const CheckpointField* cf = c.field(f.info.name)) f.from_host_bytes(cf->bytes);
+    else f.from_host_bytes(c.field("position")->bytes);  // the list positions: rebuilt below
   if (domain_) {  // every particle is here: this process keeps its share, cut anew
     cx_.s.set_count(n);
     domain_->split(cx_.s, particle_costs(true), halo_width_);

@@ -101,7 +101,7 @@ class NeighbourStage {
                      const ListNeeds& needs, bool every_particle) {
     const int n = s.size();
     if (keys_.size() != std::size_t(n))  // a process's share of a run changed (parallel/)
-      keys_.resize(n), perm_.resize(n), count_.resize(n), fluid_count_.resize(n);
+      keys_.fit(n), perm_.fit(n), count_.fit(n), fluid_count_.fit(n);
     B::for_each(n, CellKeyPass<D>{grid, s.x.data(), s.material.data(), mats, keys_.data()});
     B::sort_by_cell(keys_.data(), n, 2 * grid.total, perm_.data(), bucket_start_.data(), bucket_end_.data(), s.id.data());
     s.permute(perm_.data());

@@ -133,6 +133,7 @@ class MpiCommunicator final : public Communicator {
                       const std::vector<std::size_t>& recv_bytes) override {
     const CallClock clock(seconds_);
     constexpr int kTag = 52;  // one exchange at a time: messages of a pair arrive in order
+    for (int r = 0; r < size_; ++r) bytes_count(send_bytes[r]), bytes_count(recv_bytes[r]);  // before any is posted
     std::vector<MPI_Request> req;
     std::size_t at = 0;
     for (int q = 0; q < size_; ++q) {

@@ -19,6 +19,28 @@
 
 namespace psph {
 
+// A halo's values, particle by particle, into and out of a contiguous buffer.
+struct PackBytes {
+  const unsigned char* from;
+  unsigned char* to;
+  const int* index;
+  std::size_t elem;
+  PSPH_HD void operator()(int k) const {
+    const unsigned char* src = from + std::size_t(index[k]) * elem;
+    for (std::size_t b = 0; b < elem; ++b) to[std::size_t(k) * elem + b] = src[b];
+  }
+};
+struct UnpackBytes {
+  unsigned char* to;
+  const unsigned char* from;
+  const int* index;
+  std::size_t elem;
+  PSPH_HD void operator()(int k) const {
+    unsigned char* dst = to + std::size_t(index[k]) * elem;
+    for (std::size_t b = 0; b < elem; ++b) dst[b] = from[std::size_t(k) * elem + b];
+  }
+};
+
 template <int D, class B>
 class ParticleDomain {
  public:
@@ -303,28 +325,6 @@ class ParticleDomain {
     halo_bytes_ += static_cast<long long>(send_buf_.size());
     ++refreshes_;
   }
-
-  // A halo's values, particle by particle, into and out of a contiguous buffer.
-  struct PackBytes {
-    const unsigned char* from;
-    unsigned char* to;
-    const int* index;
-    std::size_t elem;
-    PSPH_HD void operator()(int k) const {
-      const unsigned char* src = from + std::size_t(index[k]) * elem;
-      for (std::size_t b = 0; b < elem; ++b) to[std::size_t(k) * elem + b] = src[b];
-    }
-  };
-  struct UnpackBytes {
-    unsigned char* to;
-    const unsigned char* from;
-    const int* index;
-    std::size_t elem;
-    PSPH_HD void operator()(int k) const {
-      unsigned char* dst = to + std::size_t(index[k]) * elem;
-      for (std::size_t b = 0; b < elem; ++b) dst[b] = from[std::size_t(k) * elem + b];
-    }
-  };
 
   bool near_me(const double* x) const { return cuts_.distance2(x, cuts_.box(comm_.rank())) < width_ * width_; }
 

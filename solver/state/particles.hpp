@@ -236,7 +236,7 @@ class ParticleState {
       if (!out.empty()) B::download(out.data(), arr.data(), out.size());
     };
     h.from_host_bytes = [&arr](const std::vector<unsigned char>& in) {
-      arr.resize(in.size() / sizeof(T));
+      arr.fit(in.size() / sizeof(T));
       if (!in.empty()) B::upload(arr.data(), in.data(), in.size());
     };
     h.gather_to_host = [this, &arr, width](const std::vector<int>& idx, std::vector<unsigned char>& out) {
