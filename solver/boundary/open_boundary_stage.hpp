@@ -60,7 +60,7 @@ class OpenBoundaryStage {
       du[b] = cx.mats.open.inward(z) * (cx.mats.open.pressure(z) - q[2] / q[0]) / (q[3] / q[0]);
     }
     cx.launch(SetBufferVelocity<D>{v, cx.mats, cx.cells(), cx.list(), cx.kern, {u_band[0], u_band[1]},
-                                             {du[0], du[1]}, Real(kBufferShift / dt)});
+                                             {du[0], du[1]}, Real(double(kBufferShift) / dt)});
   }
 
   void buffer_state(StepContext<D, B>& cx) const {

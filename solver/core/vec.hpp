@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/config.hpp"
+#include "core/real_math.hpp"
 
 namespace psph {
 

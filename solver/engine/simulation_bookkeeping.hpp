@@ -20,7 +20,7 @@ void Simulation<D, B>::setup_context(const Scene& sc) {
   cx.grid = cx.neighbours.setup(lower, upper, periodic, opt_.support_radius, opt_.neighbour_skin);
   cx.kern = Kernel<D>::make(opt_.kernel, Real(opt_.support_radius));
   cx.spacing = opt_.spacing;
-  cx.smoothing_length = opt_.support_radius / support_per_smoothing_length(opt_.kernel);
+  cx.smoothing_length = double(opt_.support_radius) / double(support_per_smoothing_length(opt_.kernel));
   cx.continuity = opt_.density == DensityMethod::Continuity;
   cx.mats.count = static_cast<int>(sc.materials.size());
   for (int k = 0; k < cx.mats.count; ++k) {

@@ -34,7 +34,7 @@ inline TimeStepInputs time_step_inputs(const Material* m, int count, bool implic
     if (m[k].kind != MaterialKind::Fluid) continue;
     if (!implicit_viscosity && m[k].viscosity > 0) in.nu_max = std::max(in.nu_max, double(m[k].viscosity / m[k].rest_density));
     if (surface_tension > 0) {
-      const double r = m[k].rest_density / surface_tension;
+      const double r = double(m[k].rest_density) / surface_tension;
       in.rho_over_sigma = in.rho_over_sigma > 0 ? std::min(in.rho_over_sigma, r) : r;
     }
   }

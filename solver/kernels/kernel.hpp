@@ -124,13 +124,13 @@ struct Kernel {
   // sum_j W_ij over a full square (cubic) lattice of the given spacing, self included: the number
   // density summation gives a particle at rest (1 / spacing^D up to the kernel's discretisation).
   double lattice_sum(double spacing) const {
-    const int n = static_cast<int>(std::ceil(support / spacing));
+    const int n = static_cast<int>(std::ceil(double(support) / spacing));
     double sum = 0;
     int idx[3] = {-n, -n, -n};
     for (;;) {
       double r2 = 0;
       for (int d = 0; d < D; ++d) r2 += (idx[d] * spacing) * (idx[d] * spacing);
-      sum += W(Real(std::sqrt(r2)));
+      sum += double(W(Real(std::sqrt(r2))));
       int d = 0;
       while (d < D && ++idx[d] > n) idx[d++] = -n;
       if (d == D) break;

@@ -136,7 +136,7 @@ class ElasticStage {
   void end_of_step(StepContext<D, B>& cx, double dt) {
     const StageScope scope("solid");
     if (active_ && o_.solid_damping_rate > 0)
-      dissipated_ += dt * cx.template sum_of<Real>(DampingPowerOf<D>{cx.view(), cx.mats, Real(o_.solid_damping_rate)});
+      dissipated_ += dt * double(cx.template sum_of<Real>(DampingPowerOf<D>{cx.view(), cx.mats, Real(o_.solid_damping_rate)}));
   }
 
   double elastic_energy(StepContext<D, B>& cx, ParticleModuli moduli) const {

@@ -84,7 +84,7 @@ struct StepContext {
   // The lists expire when a particle of the run moved by half their skin.
   bool lists_expired() {
     const double half_skin = neighbours.half_skin();
-    return half_skin <= 0 || max_of<Real>(neighbours.displacement(s, grid)) >= half_skin;
+    return half_skin <= 0 || double(max_of<Real>(neighbours.displacement(s, grid))) >= half_skin;
   }
 
   // Launches a per-particle pass on every particle here. A run shared out over processes runs it
