@@ -29,26 +29,6 @@
 
 namespace psph {
 
-// Adds a scope's wall time, less its time in calls to the other processes, to `seconds`: a
-// process's own work in its steps, which a run shared out over processes balances.
-class BusyClock {
- public:
-  BusyClock(double& seconds, const Communicator& comm)
-      : seconds_(seconds), comm_(comm), t0_(std::chrono::steady_clock::now()), waited0_(comm.seconds_in_calls()) {}
-  ~BusyClock() {
-    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count() -
-                (comm_.seconds_in_calls() - waited0_);
-  }
-  BusyClock(const BusyClock&) = delete;
-  BusyClock& operator=(const BusyClock&) = delete;
-
- private:
-  double& seconds_;
-  const Communicator& comm_;
-  std::chrono::steady_clock::time_point t0_;
-  double waited0_;
-};
-
 // Seconds since start() less the time spent waiting for other processes meanwhile.
 class BusyTime {
  public:
@@ -65,6 +45,20 @@ class BusyTime {
   const Communicator* comm_ = nullptr;
   std::chrono::steady_clock::time_point t0_;
   double waited0_ = 0;
+};
+
+// Adds a scope's wall time, less its time in calls to the other processes, to `seconds`: a
+// process's own work in its steps, which a run shared out over processes balances.
+class BusyClock {
+ public:
+  BusyClock(double& seconds, const Communicator& comm) : seconds_(seconds) { time_.start(comm); }
+  ~BusyClock() { seconds_ += time_.seconds(); }
+  BusyClock(const BusyClock&) = delete;
+  BusyClock& operator=(const BusyClock&) = delete;
+
+ private:
+  double& seconds_;
+  BusyTime time_;
 };
 
 template <int D, class B>
@@ -108,11 +102,6 @@ class Simulation final : public Engine {
   void step(double t_stop) override {
     const ProfileRecording recording(profile_);
     const BusyClock busy(busy_, comm_);
-    advance(t_stop);
-  }
-
- private:
-  void advance(double t_stop) {
     const double dt = next_dt(t_stop);
     ramp(t_ + dt);  // the forces evaluated in this step are those at its end
     open_.buffer_velocity(cx_, dt);
@@ -143,8 +132,6 @@ class Simulation final : public Engine {
     dt_ = dt;
     check_health();
   }
-
- public:
 
   std::vector<double> field(const std::string& name) override {
     elastic_.prepare_field(cx_, name, steps_);
@@ -315,7 +302,7 @@ class Simulation final : public Engine {
   int particles_ = 0;  // of the whole run
   double halo_width_ = 0;
   double busy_ = 0;    // seconds in step() since the last list build
-  std::unique_ptr<CostCalibration<B>> calibration_;  // a shared run's first steps
+  std::unique_ptr<CostCalibration<B>> calibration_;  // in a shared run's initial state
   BusyTime cost_clock_;              // since the measurement began
   bool measure_costs_ = false;       // in the initial state of a shared run
   bool measured_cut_due_ = false;    // the costs were measured: cut with them at the next list build

@@ -2,7 +2,7 @@
 // A particle's share of a step's cost, which the decomposition balances (parallel/): by class, as
 // the passes treat them. A wall far from the fluid has no lists and no pass work; one near it
 // presents a pressure and velocity to the fluid; a solid adds its stress and corrections. A shared
-// run measures each class's cost in its first steps (parallel/cost_calibration.hpp); until then,
+// run measures each class's cost in its initial state (parallel/cost_calibration.hpp); until then,
 // and where nothing runs (the decomposition counts of `poresph bench --decomposition`), the static
 // guesses below.
 #include <cstdint>
@@ -28,7 +28,7 @@ inline CostClass cost_class(MaterialKind kind, bool near_fluid) {
   return near_fluid ? kWallNearFluidCost : kWallFarCost;
 }
 
-// Seconds per particle and step, or static weights (a fluid particle 1), one per class.
+// Seconds per particle and force evaluation, or static weights (a fluid particle 1), one per class.
 struct ClassCosts {
   double per_particle[kCostClasses] = {1.0, 1.0, 1.0, 0.25, 0.25};
   bool measured = false;

@@ -19,28 +19,6 @@
 
 namespace psph {
 
-// A halo's values, particle by particle, into and out of a contiguous buffer.
-struct PackBytes {
-  const unsigned char* from;
-  unsigned char* to;
-  const int* index;
-  std::size_t elem;
-  PSPH_HD void operator()(int k) const {
-    const unsigned char* src = from + std::size_t(index[k]) * elem;
-    for (std::size_t b = 0; b < elem; ++b) to[std::size_t(k) * elem + b] = src[b];
-  }
-};
-struct UnpackBytes {
-  unsigned char* to;
-  const unsigned char* from;
-  const int* index;
-  std::size_t elem;
-  PSPH_HD void operator()(int k) const {
-    unsigned char* dst = to + std::size_t(index[k]) * elem;
-    for (std::size_t b = 0; b < elem; ++b) dst[b] = from[std::size_t(k) * elem + b];
-  }
-};
-
 template <int D, class B>
 class ParticleDomain {
  public:
@@ -309,7 +287,7 @@ class ParticleDomain {
                              std::to_string(owned_.size()) + " particles");
     const int out = int(send_index_.size()), in = int(recv_index_.size());
     send_buf_.resize(std::size_t(out) * elem), recv_buf_.resize(std::size_t(in) * elem);
-    if (out) B::for_each(out, PackBytes{a, send_buf_.data(), send_index_.data(), elem});
+    if (out) B::for_each(out, GatherRows<unsigned char>{send_buf_.data(), a, send_index_.data(), int(elem)});
     std::vector<std::size_t> sb(comm_.size()), rb(comm_.size());
     for (int r = 0; r < comm_.size(); ++r) sb[r] = send_[r].size() * elem, rb[r] = recv_[r].size() * elem;
     if (B::host_memory || device_exchange_) {
@@ -321,7 +299,7 @@ class ParticleDomain {
       comm_.exchange_known(host_out_.data(), sb, host_in_.data(), rb);
       if (in) B::upload(recv_buf_.data(), host_in_.data(), host_in_.size());
     }
-    if (in) B::for_each(in, UnpackBytes{a, recv_buf_.data(), recv_index_.data(), elem});
+    if (in) B::for_each(in, ScatterRows<unsigned char>{a, recv_buf_.data(), recv_index_.data(), int(elem)});
     halo_bytes_ += static_cast<long long>(send_buf_.size());
     ++refreshes_;
   }

@@ -81,6 +81,18 @@ struct GatherRows {
     for (int k = 0; k < width; ++k) out[to + k] = in[from + k];
   }
 };
+// The inverse: row i of `in` to row index[i] of `out`.
+template <class T>
+struct ScatterRows {
+  T* out;
+  const T* in;
+  const int* index;
+  int width;
+  PSPH_HD void operator()(int i) const {
+    const std::size_t to = std::size_t(index[i]) * width, from = std::size_t(i) * width;
+    for (int k = 0; k < width; ++k) out[to + k] = in[from + k];
+  }
+};
 
 // index_of_id[id] = -1: no particle with that id here (a run shared out over processes holds
 // some of them), before IndexOfIdPass.
