@@ -4,7 +4,7 @@ whatever their files: one .vtp or .vtu per time, or a .pvtp or .pvtu and its pie
 several processes). Read through VTK's own readers (ParaView's Python modules).
 
   compare_extracts.py RUN_A RUN_B [FORMAT]    FORMAT: what RUN_B's files must be (vtp, pvtp, vtu, pvtu)
-Exit 0 when they agree, 1 with the first difference otherwise.
+Each extract must say the run's precision (field data "precision"). Exit 0 when they agree, 1 with the first difference otherwise.
 """
 import os
 import re
@@ -38,6 +38,10 @@ def arrays(path):
     pd = d.GetPointData()
     for k in range(pd.GetNumberOfArrays()):
         out[pd.GetArrayName(k)] = vtk_to_numpy(pd.GetArray(k))
+    precision = d.GetFieldData().GetAbstractArray("precision")
+    if precision is None or precision.GetValue(0) not in ("double", "mixed", "single"):
+        fail(f"{path}: no field data 'precision' naming the run's precision")
+    out["precision"] = precision.GetValue(0)
     return d.GetClassName(), d.GetNumberOfCells(), out
 
 
@@ -52,6 +56,8 @@ def main(a, b, form=None):
         kb, cb, xb = arrays(os.path.join(b, "extracts", fb))
         if sorted(xa) != sorted(xb):
             fail(f"t = {t}: fields {sorted(xa)} / {sorted(xb)}")
+        if xa.pop("precision") != xb.pop("precision"):
+            fail(f"t = {t}: {fb} and {fa} were written in other precisions")
         for name in xa:
             if xa[name].shape != xb[name].shape or xa[name].tobytes() != xb[name].tobytes():
                 fail(f"t = {t}: {fb}'s {name} differs from {fa}'s")

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <cstring>
 #include <fstream>
 
 #include "engine/engine.hpp"
@@ -124,6 +125,64 @@ TEST(Checkpoint, Hdf5KeepsFieldsWithTheirUnits) {
   fs::remove(file);
 }
 #endif
+
+namespace {
+// A registry that stores each real field of `ck` in `bytes` per component (the other fields as they are).
+FieldRegistry sizes_of(const Checkpoint& ck, std::size_t bytes) {
+  FieldRegistry r;
+  for (const CheckpointField& f : ck.fields) {
+    FieldHandle h;
+    h.info = FieldInfo{f.name, f.type, f.components, f.unit, f.description};
+    h.element_bytes = f.type == FieldType::Real && f.components > 0 ? bytes * std::size_t(f.components) : f.element_bytes;
+    r.add(std::move(h));
+  }
+  return r;
+}
+}  // namespace
+
+// A checkpoint of another precision is converted field by field: double to float rounds to
+// nearest, float to double is exact; integer fields and fields of unknown components as they are;
+// and a run restores from the converted one.
+TEST(Checkpoint, ConvertsBetweenPrecisions) {
+  Case c = embedded("settling_cylinder_2d");
+  auto a = make_cpu_engine(c.scene);
+  for (int s = 0; s < 10; ++s) a->step(1e9);
+  Checkpoint ck = a->checkpoint();
+  ck.fields.push_back(CheckpointField{"opaque", 3, std::vector<unsigned char>(3 * std::size_t(ck.particles), 7)});
+  const Checkpoint narrow = with_precision_of(ck, sizes_of(ck, sizeof(float)), "single");
+  EXPECT_EQ(narrow.precision, "single");
+  ASSERT_EQ(narrow.fields.size(), ck.fields.size());
+  for (std::size_t f = 0; f < ck.fields.size(); ++f) {
+    const CheckpointField &from = ck.fields[f], &to = narrow.fields[f];
+    if (from.type != FieldType::Real || from.components == 0) {
+      EXPECT_TRUE(to.bytes == from.bytes) << from.name;
+      continue;
+    }
+    ASSERT_EQ(to.element_bytes, sizeof(float) * std::size_t(from.components)) << from.name;
+    ASSERT_EQ(to.bytes.size() * 2, from.bytes.size()) << from.name;
+    for (std::size_t k = 0; k < to.bytes.size() / sizeof(float); ++k) {
+      double d;
+      float g;
+      std::memcpy(&d, from.bytes.data() + 8 * k, 8), std::memcpy(&g, to.bytes.data() + 4 * k, 4);
+      ASSERT_EQ(g, float(d)) << from.name << " value " << k;
+    }
+  }
+  ck.fields.pop_back();
+  const Checkpoint back = with_precision_of(with_precision_of(ck, sizes_of(ck, 4), "single"), sizes_of(ck, 8), precision_name());
+  auto b = make_cpu_engine(c.scene);
+  if (sizeof(Real) == 8) {  // a double build restores the widened checkpoint: every value the float one's
+    b->restore(with_precision_of(ck, sizes_of(ck, 4), "single"));
+    const std::vector<double> x = b->field("velocity"), x_back = [&] {
+      auto e = make_cpu_engine(c.scene);
+      e->restore(back);
+      return e->field("velocity");
+    }();
+    EXPECT_EQ(x, x_back);
+    EXPECT_NE(x, a->field("velocity"));  // rounded to float and back
+    b->step(1e9);
+    EXPECT_EQ(b->steps(), 11);
+  }
+}
 
 TEST(Checkpoint, RefusesAnotherScene) {
   Case c = embedded("poiseuille_2d");

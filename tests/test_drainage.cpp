@@ -68,15 +68,15 @@ TEST(GrainPack, UnreachableFractionIsACaseError) {
 TEST(ForceRegion, OnlyItsMaterialInsideItsBox) {
   FluidTable<2> mats;
   mats.count = 2;
-  mats.body_force[0] = Vec<2>{{0, -1}};
+  mats.body_force[0] = Vec<2>{{0, -1}}, mats.body_force[1] = Vec<2>::zero();
   mats.region_count = 1;
   mats.region[0].material = 1;
-  mats.region[0].lower = Vec<2>{{0, 1}}, mats.region[0].upper = Vec<2>{{1, 2}};
+  mats.region[0].lower = Point<2>{{0, 1}}, mats.region[0].upper = Point<2>{{1, 2}};
   mats.region[0].acceleration = Vec<2>{{0, -5}};
-  EXPECT_EQ(mats.body_force_at(1, Vec<2>{{0.5, 1.5}})[1], -5);
-  EXPECT_EQ(mats.body_force_at(1, Vec<2>{{0.5, 0.5}})[1], 0);
-  EXPECT_EQ(mats.body_force_at(0, Vec<2>{{0.5, 1.5}})[1], -1);  // another material
-  EXPECT_EQ(mats.body_force_at(1, Vec<2>{{0.5, 2.0}})[1], 0);     // the upper face is outside
+  EXPECT_EQ(mats.body_force_at(1, Point<2>{{0.5, 1.5}})[1], -5);
+  EXPECT_EQ(mats.body_force_at(1, Point<2>{{0.5, 0.5}})[1], 0);
+  EXPECT_EQ(mats.body_force_at(0, Point<2>{{0.5, 1.5}})[1], -1);  // another material
+  EXPECT_EQ(mats.body_force_at(1, Point<2>{{0.5, 2.0}})[1], 0);     // the upper face is outside
 }
 
 TEST(ForceRegion, CaseFileErrors) {

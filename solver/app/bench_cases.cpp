@@ -10,6 +10,7 @@
 #include "scene/embedded_cases.hpp"
 #include "scene/scene_builder.hpp"
 #include "validation/oscillating_plate.hpp"
+#include "validation/plate_inclusion.hpp"
 
 namespace psph {
 
@@ -95,6 +96,13 @@ std::vector<BenchSpec> bench_specs(const std::string& backend, bool quick) {
     damaged(f + "_rmc", form, DamageModel::RankineMohrCoulomb, rmc);
   }
   damaged("stress_rmc_ghost", SolidFormulation::Stress, DamageModel::RankineMohrCoulomb, DamageDegrades::Ghost);
+  // The CI's coarse plate with a rigid inclusion (Deptulski 2021 §4.3: 4,026 particles, AT-2 in
+  // tension), from rest: the damage stage's passes on a plate that cracks.
+  BenchSpec inclusion;
+  inclusion.name = "plate_inclusion_2d";
+  inclusion.build = [] { return plate_inclusion_case("at2", false, 30e-6); };
+  inclusion.steps = quick ? 100 : 2000;
+  s.push_back(inclusion);
   // A rigid disc settling through a viscous fluid: the bodies' sums and placement on top of the fluid.
   embedded("settling_cylinder_2d", 100, 2000);
   embedded("elastic_cube_3d", 20, 200);

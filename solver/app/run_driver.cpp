@@ -66,7 +66,11 @@ int RunDriver::open() {
   }
   if (!opt_.restart.empty()) {
     try {
-      engine_->restore(restart_checkpoint());
+      const Checkpoint saved = restart_checkpoint();
+      engine_->restore(saved);
+      if (saved.precision != precision_name())
+        restart_notes_.push_back("the checkpoint was written in " + saved.precision + " precision: its real fields converted to " +
+                                 precision_name() + " (double to float rounds to nearest; float to double is exact)");
     } catch (const std::exception& e) {
       const std::string msg = e.what();
       return refuse("--restart " + (msg.rfind(restart_file_, 0) == 0 ? "" : restart_file_ + ": ") + msg);

@@ -18,13 +18,13 @@ class OpenBoundaryStage {
     active_ = ob.axis >= 0;
     if (!active_) return;
     OpenBoundaryZone<D>& z = cx.mats.open;
-    const Real lo = Real(ob.lower), hi = Real(ob.upper), b = Real(ob.thickness);
+    const Coord lo = Coord(ob.lower), hi = Coord(ob.upper), b = Coord(ob.thickness);
     z.axis = ob.axis;
     z.inlet_lower = ob.inlet_at_lower ? lo : hi - b, z.inlet_upper = ob.inlet_at_lower ? lo + b : hi;
     z.outlet_lower = ob.inlet_at_lower ? hi - b : lo, z.outlet_upper = ob.inlet_at_lower ? hi : lo + b;
     z.inlet_pressure = Real(ob.inlet_pressure), z.outlet_pressure = Real(ob.outlet_pressure);
     z.inlet_material = ob.inlet_material;
-    z.face_band = Real(support_radius);
+    z.face_band = Coord(support_radius);
     z.domain_lower = lo;
     z.lattice_volume = Real(1 / cx.kern.lattice_sum(spacing));
   }

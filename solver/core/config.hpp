@@ -19,14 +19,24 @@
 
 namespace psph {
 
-// Working precision of every particle field. Double by default: positions of a 1e-3 m domain move
-// by ~1e-11 m per step in the creeping-flow validations, below float resolution at that magnitude.
+// Working precisions. `Real`: every particle field and the pair loops. `Coord`: positions,
+// reference positions and displacements, and the time integration of positions. Double by default:
+// positions of a 1e-3 m domain move by ~1e-11 m per step in the creeping-flow validations, below
+// float resolution at that magnitude. `mixed` keeps Coord double and computes each pair difference
+// in double before handing it to the float pair code (neighbours/cell_grid.hpp).
 #if defined(PORESPH_SINGLE_PRECISION)
 using Real = float;
+using Coord = float;
+#elif defined(PORESPH_MIXED_PRECISION)
+using Real = float;
+using Coord = double;
 #else
 using Real = double;
+using Coord = double;
 #endif
 
-constexpr const char* precision_name() { return sizeof(Real) == 4 ? "single" : "double"; }
+constexpr const char* precision_name() {
+  return sizeof(Real) == 8 ? "double" : sizeof(Coord) == 8 ? "mixed" : "single";
+}
 
 }  // namespace psph

@@ -111,26 +111,36 @@ class ExactSum {
   int special_ = 0;
 };
 
-// A reduction's value type seen as its Real components (Real, Vec, and the stages' structs of
-// Reals such as BandSums or RigidLoadSum).
+// What a reduction's value type is made of: a floating-point scalar itself; a struct its
+// `component_type` where it names one (RigidLoadSum: double), otherwise Real (Vec, BandSums).
+template <class T, class = void>
+struct ComponentOf { using type = Real; };
+template <class T>
+struct ComponentOf<T, std::enable_if_t<std::is_floating_point_v<T>>> { using type = T; };
+template <class T>
+struct ComponentOf<T, std::void_t<typename T::component_type>> { using type = typename T::component_type; };
+
+// A reduction's value type seen as its components.
 template <class T>
 struct RealComponents {
-  static_assert(std::is_trivially_copyable_v<T> && sizeof(T) % sizeof(Real) == 0,
-                "an exact sum needs a type made of Reals");
-  static constexpr int count = int(sizeof(T) / sizeof(Real));
-  PSPH_HD static Real get(const T& v, int k) {
-    Real r;
-    std::memcpy(&r, reinterpret_cast<const char*>(&v) + k * sizeof(Real), sizeof(Real));
+  using C = typename ComponentOf<T>::type;
+  static_assert(std::is_trivially_copyable_v<T> && sizeof(T) % sizeof(C) == 0,
+                "an exact sum needs a type made of one floating-point type");
+  static constexpr int count = int(sizeof(T) / sizeof(C));
+  PSPH_HD static C get(const T& v, int k) {
+    C r;
+    std::memcpy(&r, reinterpret_cast<const char*>(&v) + k * sizeof(C), sizeof(C));
     return r;
   }
-  PSPH_HD static void set(T& v, int k, Real r) { std::memcpy(reinterpret_cast<char*>(&v) + k * sizeof(Real), &r, sizeof(Real)); }
+  PSPH_HD static void set(T& v, int k, C r) { std::memcpy(reinterpret_cast<char*>(&v) + k * sizeof(C), &r, sizeof(C)); }
 };
 
 // T from one rounded exact sum per component.
 template <class T>
 PSPH_HD T rounded(const ExactSum* acc) {
   T out{};
-  for (int k = 0; k < RealComponents<T>::count; ++k) RealComponents<T>::set(out, k, Real(acc[k].value()));
+  using C = typename RealComponents<T>::C;
+  for (int k = 0; k < RealComponents<T>::count; ++k) RealComponents<T>::set(out, k, C(acc[k].value()));
   return out;
 }
 

@@ -14,7 +14,8 @@ constexpr int kMaxForceRegions = 4;
 template <int D>
 struct ForceRegion {
   int material = 0;
-  Vec<D> lower, upper, acceleration;
+  Point<D> lower, upper;
+  Vec<D> acceleration;
 };
 
 template <int D>
@@ -24,11 +25,11 @@ struct FluidTable : MaterialTable<D> {
   OpenBoundaryZone<D> open;  // pressure inlet and outlet buffers (boundary/open_boundary.hpp)
 
   // A fluid particle that the forces move: not in an open boundary's buffer (whose state is imposed).
-  PSPH_HD bool moves_freely(int k, const Vec<D>& x) const {
+  PSPH_HD bool moves_freely(int k, const Point<D>& x) const {
     return this->is_fluid(k) && open.zone(x) == BufferZone::None;
   }
   // Body force (m/s^2) on a particle of material k at x: the material's plus its regions'.
-  PSPH_HD Vec<D> body_force_at(int k, const Vec<D>& x) const {
+  PSPH_HD Vec<D> body_force_at(int k, const Point<D>& x) const {
     Vec<D> g = this->body_force[k];
     for (int r = 0; r < region_count; ++r) {
       bool in = region[r].material == k;

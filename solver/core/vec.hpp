@@ -8,50 +8,73 @@
 namespace psph {
 
 // True for a finite number (false for NaN and +-Inf), on host and device alike.
-PSPH_HD inline bool is_finite(Real x) { return x - x == Real(0); }
+template <class T>
+PSPH_HD inline bool is_finite(T x) { return x - x == T(0); }
 
-template <int D>
-struct Vec {
-  Real c[D];
-  PSPH_HD Real& operator[](int k) { return c[k]; }
-  PSPH_HD const Real& operator[](int k) const { return c[k]; }
-  static PSPH_HD Vec zero() {
-    Vec v;
-    for (int k = 0; k < D; ++k) v.c[k] = Real(0);
+// A D-vector of T: `Vec<D>` holds Real (velocities, forces, pair differences), `Point<D>` holds
+// Coord (positions, displacements: double also in mixed precision, core/config.hpp).
+template <class T, int D>
+struct VecT {
+  T c[D];
+  PSPH_HD T& operator[](int k) { return c[k]; }
+  PSPH_HD const T& operator[](int k) const { return c[k]; }
+  static PSPH_HD VecT zero() {
+    VecT v;
+    for (int k = 0; k < D; ++k) v.c[k] = T(0);
     return v;
   }
-  PSPH_HD Vec& operator+=(const Vec& o) {
+  PSPH_HD VecT& operator+=(const VecT& o) {
     for (int k = 0; k < D; ++k) c[k] += o.c[k];
     return *this;
   }
-  PSPH_HD Vec& operator-=(const Vec& o) {
+  PSPH_HD VecT& operator-=(const VecT& o) {
     for (int k = 0; k < D; ++k) c[k] -= o.c[k];
     return *this;
   }
-  PSPH_HD Vec& operator*=(Real s) {
+  PSPH_HD VecT& operator*=(T s) {
     for (int k = 0; k < D; ++k) c[k] *= s;
     return *this;
   }
 };
+template <int D>
+using Vec = VecT<Real, D>;
+template <int D>
+using Point = VecT<Coord, D>;
 
+// Explicit conversions between the two (the identity where Real is Coord).
+template <class To, class From, int D>
+PSPH_HD PSPH_PAIR inline VecT<To, D> vec_cast(const VecT<From, D>& a) {
+  VecT<To, D> out;
+  for (int k = 0; k < D; ++k) out.c[k] = static_cast<To>(a.c[k]);
+  return out;
+}
 template <int D>
-PSPH_HD inline Vec<D> operator+(Vec<D> a, const Vec<D>& b) { return a += b; }
+PSPH_HD PSPH_PAIR inline Vec<D> to_real(const Point<D>& a) { return vec_cast<Real>(a); }
 template <int D>
-PSPH_HD inline Vec<D> operator-(Vec<D> a, const Vec<D>& b) { return a -= b; }
-template <int D>
-PSPH_HD inline Vec<D> operator*(Vec<D> a, Real s) { return a *= s; }
-template <int D>
-PSPH_HD inline Vec<D> operator*(Real s, Vec<D> a) { return a *= s; }
-template <int D>
-PSPH_HD inline Real dot(const Vec<D>& a, const Vec<D>& b) {
-  Real s = 0;
+PSPH_HD inline Point<D> to_coord(const Vec<D>& a) { return vec_cast<Coord>(a); }
+
+// The scalar's type is not deduced: `v * 2` and `v * Real(x)` both take the vector's type.
+template <class T>
+struct Same { using type = T; };
+
+template <class T, int D>
+PSPH_HD inline VecT<T, D> operator+(VecT<T, D> a, const VecT<T, D>& b) { return a += b; }
+template <class T, int D>
+PSPH_HD inline VecT<T, D> operator-(VecT<T, D> a, const VecT<T, D>& b) { return a -= b; }
+template <class T, int D>
+PSPH_HD inline VecT<T, D> operator*(VecT<T, D> a, typename Same<T>::type s) { return a *= s; }
+template <class T, int D>
+PSPH_HD inline VecT<T, D> operator*(typename Same<T>::type s, VecT<T, D> a) { return a *= s; }
+template <class T, int D>
+PSPH_HD inline T dot(const VecT<T, D>& a, const VecT<T, D>& b) {
+  T s = 0;
   for (int k = 0; k < D; ++k) s += a.c[k] * b.c[k];
   return s;
 }
-template <int D>
-PSPH_HD inline Real norm2(const Vec<D>& a) { return dot(a, a); }
-template <int D>
-PSPH_HD inline Real norm(const Vec<D>& a) { return sqrt(dot(a, a)); }
+template <class T, int D>
+PSPH_HD inline T norm2(const VecT<T, D>& a) { return dot(a, a); }
+template <class T, int D>
+PSPH_HD inline T norm(const VecT<T, D>& a) { return sqrt(dot(a, a)); }
 
 // Row-major D×D matrix.
 template <int D>

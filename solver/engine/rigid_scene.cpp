@@ -37,6 +37,9 @@ SceneRigidBodies rigid_bodies_of(const Scene& sc) {
     for (const Vec3d& p : x)
       off.push_back({p[0] - out.state.back().centre[0], p[1] - out.state.back().centre[1], p[2] - out.state.back().centre[2]});
     out.offsets.push_back(off);
+    // A body is one geometry, hence one material (scene/scene_builder.cpp).
+    const std::array<double, 3>& g = sc.materials[sc.material[mem.front()]].body_force;
+    out.weight.push_back({mass * g[0], mass * g[1], mass * g[2]});
   }
   return out;
 }

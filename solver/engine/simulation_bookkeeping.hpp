@@ -33,12 +33,13 @@ void Simulation<D, B>::setup_context(const Scene& sc) {
   // The particles, with every material's rest density.
   const int n = sc.count();
   cx.s.resize(n);
-  std::vector<Vec<D>> x(n), v(n);
+  std::vector<Point<D>> x(n);
+  std::vector<Vec<D>> v(n);
   std::vector<Real> m(n), rho(n);
   std::vector<std::uint8_t> mat(n);
   std::vector<std::int32_t> id(n);
   for (int i = 0; i < n; ++i) {
-    for (int k = 0; k < D; ++k) x[i][k] = Real(sc.x[i * D + k]), v[i][k] = Real(sc.v[i * D + k]);
+    for (int k = 0; k < D; ++k) x[i][k] = Coord(sc.x[i * D + k]), v[i][k] = Real(sc.v[i * D + k]);
     m[i] = Real(sc.mass[i]);
     mat[i] = static_cast<std::uint8_t>(sc.material[i]);
     rho[i] = cx.mats.m[sc.material[i]].rest_density;
@@ -158,8 +159,8 @@ std::vector<long long> Simulation<D, B>::output_order() const {
   const std::vector<std::int32_t> id = cx_.s.id.host();
   std::vector<long long> order(id.size());
   for (std::size_t i = 0; i < id.size(); ++i) {
-    Vec<D> x;
-    for (int k = 0; k < D; ++k) x[k] = Real(xb[i * D + k]);
+    Point<D> x;
+    for (int k = 0; k < D; ++k) x[k] = Coord(xb[i * D + k]);
     const long long bucket = 2LL * cx_.grid.cell_of(x) + (cx_.mats.is_fluid(mat[i]) ? 0 : 1);
     order[i] = bucket << 32 | static_cast<std::uint32_t>(id[i]);
   }
@@ -245,7 +246,8 @@ template <int D, class B>
 std::string Simulation<D, B>::culprit(const BadParticle<D>& bad, int code) {
   const int wanted = cx_.template max_of<int>(BadParticleId<D>{bad, code});
   if (wanted < 0) return "";
-  std::vector<Vec<D>> x, v;
+  std::vector<Point<D>> x;
+  std::vector<Vec<D>> v;
   std::vector<std::uint8_t> mat;
   std::vector<std::int32_t> id;
   cx_.s.x.download(x), cx_.s.v.download(v), cx_.s.material.download(mat), cx_.s.id.download(id);
@@ -320,9 +322,11 @@ Checkpoint Simulation<D, B>::checkpoint() {
   return c;
 }
 
-// Everything is checked before anything is restored.
+// Everything is checked before anything is restored. A checkpoint of another precision is
+// converted first (state/checkpoint.hpp); the run's log says so (app/run_driver.cpp).
 template <int D, class B>
 void Simulation<D, B>::restore(const Checkpoint& c) {
+  if (c.precision != precision_name()) return restore(with_precision_of(c, cx_.s.fields(), precision_name()));
   auto differs = [](const std::string& what, const std::string& ours, const std::string& theirs) {
     throw std::invalid_argument("the checkpoint " + what + " (" + theirs + ") differs from the case's (" + ours + ")");
   };
@@ -330,7 +334,6 @@ void Simulation<D, B>::restore(const Checkpoint& c) {
   if (!c.whole()) throw std::logic_error("restore: a slice of a checkpoint, not the whole of it");
   if (c.dimension != D) differs("dimension", std::to_string(D), std::to_string(c.dimension));
   if (c.particles != n) differs("particle count", std::to_string(n), std::to_string(c.particles));
-  if (c.precision != precision_name()) differs("precision", precision_name(), c.precision);
   const bool saved_lists = c.field(kListPositionsField) != nullptr;  // older checkpoints have none
   for (const auto& f : cx_.s.fields().all()) {
     const CheckpointField* cf = c.field(f.info.name);

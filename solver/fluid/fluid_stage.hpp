@@ -32,7 +32,7 @@ class FluidStage {
     for (int r = 0; r < cx.mats.region_count; ++r) {
       cx.mats.region[r].material = regions_[r].material;
       for (int d = 0; d < D; ++d)
-        cx.mats.region[r].lower[d] = Real(regions_[r].lower[d]), cx.mats.region[r].upper[d] = Real(regions_[r].upper[d]);
+        cx.mats.region[r].lower[d] = Coord(regions_[r].lower[d]), cx.mats.region[r].upper[d] = Coord(regions_[r].upper[d]);
     }
     fo_.xsph = Real(o.xsph);
     fo_.laplacian = o.laplacian_correction;

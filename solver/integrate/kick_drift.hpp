@@ -35,7 +35,7 @@ struct DriftPass {
   Real dt;
   bool continuity;
   PSPH_HD void operator()(int i) const {
-    s.x[i] = grid.wrap(s.x[i] + (s.v[i] + s.v_xsph[i]) * dt);
+    s.x[i] = grid.wrap(s.x[i] + to_coord(s.v[i] + s.v_xsph[i]) * Coord(dt));  // in Coord: mixed keeps the digits
     if (continuity) s.rho[i] += s.drho[i] * dt;
   }
 };
@@ -52,7 +52,7 @@ struct BadParticle {
   Real max_density_deviation;
   PSPH_HD int operator()(int i) const {
     Real sum = s.rho[i];
-    for (int k = 0; k < D; ++k) sum += s.x[i][k] + s.v[i][k] + s.a[i][k];
+    for (int k = 0; k < D; ++k) sum += Real(s.x[i][k]) + s.v[i][k] + s.a[i][k];
     if (!is_finite(sum)) return 4;
     if (!grid.inside(s.x[i])) return 3;
     const int m = s.material[i];

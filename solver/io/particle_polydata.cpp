@@ -2,12 +2,16 @@
 
 #include <stdexcept>
 
+#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkStringArray.h>
 #include <vtkCellType.h>
+
+#include "core/config.hpp"
 
 namespace psph {
 namespace {
@@ -48,6 +52,10 @@ vtkSmartPointer<vtkPolyData> ParticlePolyData::wrap(const ParticleFrame& f) {
   poly->SetPoints(pts);
   poly->SetVerts(verts_);
   add_fields(f, poly->GetPointData());
+  vtkNew<vtkStringArray> precision;  // the run's arithmetic (the extract's values are float32 in any)
+  precision->SetName("precision");
+  precision->InsertNextValue(precision_name());
+  poly->GetFieldData()->AddArray(precision);
   return poly;
 }
 
@@ -57,6 +65,7 @@ vtkSmartPointer<vtkUnstructuredGrid> ParticlePolyData::wrap_grid(const ParticleF
   grid->SetPoints(poly->GetPoints());
   grid->SetCells(VTK_VERTEX, verts_);
   grid->GetPointData()->ShallowCopy(poly->GetPointData());
+  grid->GetFieldData()->ShallowCopy(poly->GetFieldData());
   return grid;
 }
 

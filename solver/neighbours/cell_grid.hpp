@@ -10,16 +10,16 @@ namespace psph {
 
 template <int D>
 struct CellGrid {
-  Real lower[D];
-  Real length[D];     // domain length per axis (the period on periodic axes)
-  Real inv_cell[D];   // 1 / cell width
+  Coord lower[D];
+  Coord length[D];     // domain length per axis (the period on periodic axes)
+  Coord inv_cell[D];   // 1 / cell width
   int ncell[D];
   bool periodic[D];
   int total = 1;
 
   // Build the grid for a box [lo, hi] and a support radius. Returns false when a periodic axis is
   // shorter than 3 support radii (the caller reports that as a case-file error).
-  static bool make(const Real* lo, const Real* hi, const bool* per, Real support, CellGrid& g) {
+  static bool make(const Coord* lo, const Coord* hi, const bool* per, Coord support, CellGrid& g) {
     g.total = 1;
     bool ok = true;
     for (int k = 0; k < D; ++k) {
@@ -30,36 +30,39 @@ struct CellGrid {
       if (n < 1) n = 1;
       if (per[k] && n < 3) ok = false;
       g.ncell[k] = n;
-      g.inv_cell[k] = Real(n) / g.length[k];
+      g.inv_cell[k] = Coord(n) / g.length[k];
       g.total *= n;
     }
     return ok;
   }
 
-  PSPH_HD int axis_cell(int k, Real x) const {
+  PSPH_HD int axis_cell(int k, Coord x) const {
     int c = static_cast<int>(floor((x - lower[k]) * inv_cell[k]));
     return c < 0 ? 0 : (c >= ncell[k] ? ncell[k] - 1 : c);
   }
 
-  PSPH_HD int cell_of(const Vec<D>& x) const {
+  PSPH_HD int cell_of(const Point<D>& x) const {
     int key = 0;
     for (int k = D - 1; k >= 0; --k) key = key * ncell[k] + axis_cell(k, x[k]);
     return key;
   }
 
-  // x_i - x_j with the minimum-image convention on periodic axes.
-  PSPH_HD Vec<D> separation(const Vec<D>& xi, const Vec<D>& xj) const {
-    Vec<D> d = xi - xj;
+  // x_i - x_j with the minimum-image convention on periodic axes, in Coord.
+  PSPH_HD PSPH_PAIR Point<D> offset(const Point<D>& xi, const Point<D>& xj) const {
+    Point<D> d = xi - xj;
     for (int k = 0; k < D; ++k)
       if (periodic[k]) {
-        if (d[k] > Real(0.5) * length[k]) d[k] -= length[k];
-        else if (d[k] < Real(-0.5) * length[k]) d[k] += length[k];
+        if (d[k] > Coord(0.5) * length[k]) d[k] -= length[k];
+        else if (d[k] < Coord(-0.5) * length[k]) d[k] += length[k];
       }
     return d;
   }
+  // The same handed to the pair code: the one place where positions become Real (a difference of
+  // neighbours keeps its digits; the positions themselves would not, far from the origin).
+  PSPH_HD PSPH_PAIR Vec<D> separation(const Point<D>& xi, const Point<D>& xj) const { return to_real(offset(xi, xj)); }
 
   // Wraps a position back into the box on periodic axes.
-  PSPH_HD Vec<D> wrap(Vec<D> x) const {
+  PSPH_HD Point<D> wrap(Point<D> x) const {
     for (int k = 0; k < D; ++k)
       if (periodic[k]) {
         if (x[k] < lower[k]) x[k] += length[k];
@@ -68,7 +71,7 @@ struct CellGrid {
     return x;
   }
 
-  PSPH_HD bool inside(const Vec<D>& x) const {
+  PSPH_HD bool inside(const Point<D>& x) const {
     for (int k = 0; k < D; ++k)
       if (!periodic[k] && !(x[k] >= lower[k] && x[k] <= lower[k] + length[k])) return false;
     return true;
@@ -82,7 +85,7 @@ struct CellGrid {
 template <int D>
 struct NeighbourView {
   CellGrid<D> grid;
-  const Vec<D>* x;
+  const Point<D>* x;
   const int* bucket_start;
   const int* bucket_end;
   Real support2;
@@ -91,12 +94,12 @@ struct NeighbourView {
 
   // Calls f(key) for each distinct cell of the 3^D stencil around position xi.
   template <class F>
-  PSPH_HD void for_each_cell(const Vec<D>& xi, F&& f) const {
+  PSPH_HD void for_each_cell(const Point<D>& xi, F&& f) const {
     for_each_stencil_cell(xi, [&](int, int key) { f(key); });
   }
   // The same with the stencil index s (offset (s % 3 - 1) on the first axis, and so on).
   template <class F>
-  PSPH_HD void for_each_stencil_cell(const Vec<D>& xi, F&& f) const {
+  PSPH_HD void for_each_stencil_cell(const Point<D>& xi, F&& f) const {
     int ci[D];
     for (int k = 0; k < D; ++k) ci[k] = grid.axis_cell(k, xi[k]);
     constexpr int nstencil = D == 1 ? 3 : D == 2 ? 9 : 27;
@@ -122,12 +125,12 @@ struct NeighbourView {
   // wide that skips about a quarter of the 27 cells in 3D (each corner cell is in reach with
   // probability pi/6, each edge cell pi/4) and leaves the visiting order, hence every sum, unchanged.
   template <class F>
-  PSPH_HD void for_each_cell_in_reach(const Vec<D>& xi, F&& f) const {
+  PSPH_HD void for_each_cell_in_reach(const Point<D>& xi, F&& f) const {
     Real below[D], above[D];  // squared gaps from xi to its cell's lower and upper faces
     for (int k = 0; k < D; ++k) {
-      const Real width = Real(1) / grid.inv_cell[k];
-      const Real face = grid.lower[k] + Real(grid.axis_cell(k, xi[k])) * width;
-      const Real lo = xi[k] - face, hi = face + width - xi[k];
+      const Coord width = Coord(1) / grid.inv_cell[k];
+      const Coord face = grid.lower[k] + Coord(grid.axis_cell(k, xi[k])) * width;
+      const Real lo = Real(xi[k] - face), hi = Real(face + width - xi[k]);
       below[k] = lo > Real(0) ? lo * lo : Real(0);
       above[k] = hi > Real(0) ? hi * hi : Real(0);
     }
@@ -159,7 +162,7 @@ struct NeighbourView {
   // weigh by the kernel, zero beyond the support). The cells must be current to within half the
   // lists' skin, as for the particles' own lists.
   template <class F>
-  PSPH_HD void for_each_fluid_near(const Vec<D>& p, F&& f) const {
+  PSPH_HD void for_each_fluid_near(const Point<D>& p, F&& f) const {
     for_each_cell_in_reach(p, [&](int key) {
       const int end = bucket_end[2 * key];
       for (int j = bucket_start[2 * key]; j < end; ++j) {
@@ -173,7 +176,7 @@ struct NeighbourView {
  private:
   template <class F>
   PSPH_HD void visit(int i, int first, int last, F& f) const {
-    const Vec<D> xi = x[i];
+    const Point<D> xi = x[i];
     for_each_cell_in_reach(xi, [&](int key) {
       for (int b = 2 * key + first; b < 2 * key + last; ++b) {
         const int end = bucket_end[b];

@@ -13,11 +13,11 @@ namespace psph {
 template <int D>
 struct CellFluidBox {
   NeighbourView<D> nb;
-  Vec<D>* lo;
-  Vec<D>* hi;
+  Point<D>* lo;
+  Point<D>* hi;
   PSPH_HD void operator()(int c) const {
-    Vec<D> l, h;
-    for (int k = 0; k < D; ++k) l[k] = Real(1e30), h[k] = Real(-1e30);
+    Point<D> l, h;
+    for (int k = 0; k < D; ++k) l[k] = Coord(1e30), h[k] = Coord(-1e30);
     for (int j = nb.bucket_start[2 * c]; j < nb.bucket_end[2 * c]; ++j)
       for (int k = 0; k < D; ++k) l[k] = nb.x[j][k] < l[k] ? nb.x[j][k] : l[k], h[k] = nb.x[j][k] > h[k] ? nb.x[j][k] : h[k];
     lo[c] = l, hi[c] = h;
@@ -29,22 +29,24 @@ struct CellFluidBox {
 template <int D>
 struct CellNearFluid {
   NeighbourView<D> nb;
-  const Vec<D>* lo;
-  const Vec<D>* hi;
+  const Point<D>* lo;
+  const Point<D>* hi;
   std::uint8_t* near;
   PSPH_HD void operator()(int c) const {
-    Vec<D> centre, half;
+    Point<D> centre;
+    Vec<D> half;
     int rem = c;
     for (int k = 0; k < D; ++k) {
-      half[k] = Real(0.5) / nb.grid.inv_cell[k];
-      centre[k] = nb.grid.lower[k] + (Real(rem % nb.grid.ncell[k]) + Real(0.5)) / nb.grid.inv_cell[k];
+      half[k] = Real(Coord(0.5) / nb.grid.inv_cell[k]);
+      centre[k] = nb.grid.lower[k] + (Coord(rem % nb.grid.ncell[k]) + Coord(0.5)) / nb.grid.inv_cell[k];
       rem /= nb.grid.ncell[k];
     }
     std::uint8_t f = 0;
     nb.for_each_cell(centre, [&](int key) {
       if (f || !nb.cell_has_fluid(key)) return;
-      Vec<D> mid, size;
-      for (int k = 0; k < D; ++k) mid[k] = Real(0.5) * (lo[key][k] + hi[key][k]), size[k] = Real(0.5) * (hi[key][k] - lo[key][k]);
+      Point<D> mid;
+      Vec<D> size;
+      for (int k = 0; k < D; ++k) mid[k] = Coord(0.5) * (lo[key][k] + hi[key][k]), size[k] = Real(Coord(0.5) * (hi[key][k] - lo[key][k]));
       const Vec<D> d = nb.grid.separation(centre, mid);
       Real gap2 = 0;
       for (int k = 0; k < D; ++k) {
@@ -64,12 +66,12 @@ struct CellNearFluid {
 template <int D>
 struct NearFluid {
   NeighbourView<D> nb;
-  const Vec<D>* lo;  // CellFluidBox
-  const Vec<D>* hi;
+  const Point<D>* lo;  // CellFluidBox
+  const Point<D>* hi;
   const std::uint8_t* cell_near;  // CellNearFluid
   std::uint8_t* near;
   PSPH_HD void operator()(int i) const {
-    const Vec<D> xi = nb.x[i];
+    const Point<D> xi = nb.x[i];
     const int own = nb.grid.cell_of(xi);
     if (i >= nb.bucket_start[2 * own] && i < nb.bucket_end[2 * own]) return void(near[i] = 1);  // i is fluid
     if (!cell_near[own]) return void(near[i] = 0);  // no fluid box in reach of the cell
@@ -77,11 +79,11 @@ struct NearFluid {
     nb.for_each_cell(xi, [&](int key) {  // the fluid boxes below do what a reach test would
       if (found || nb.bucket_end[2 * key] == nb.bucket_start[2 * key]) return;
       // The box's nearest point, on periodic axes as the cell's minimum image of xi sees it.
-      const Vec<D> d = nb.grid.separation(xi, nb.x[nb.bucket_start[2 * key]]);
+      const Point<D> d = nb.grid.offset(xi, nb.x[nb.bucket_start[2 * key]]);
       Real gap2 = 0;
       for (int k = 0; k < D; ++k) {
-        const Real to_lo = lo[key][k] - (nb.x[nb.bucket_start[2 * key]][k] + d[k]);  // box faces relative to xi's image
-        const Real to_hi = (nb.x[nb.bucket_start[2 * key]][k] + d[k]) - hi[key][k];
+        const Real to_lo = Real(lo[key][k] - (nb.x[nb.bucket_start[2 * key]][k] + d[k]));  // box faces relative to xi's image
+        const Real to_hi = Real((nb.x[nb.bucket_start[2 * key]][k] + d[k]) - hi[key][k]);
         const Real g = to_lo > Real(0) ? to_lo : to_hi > Real(0) ? to_hi : Real(0);
         gap2 += g * g;
       }

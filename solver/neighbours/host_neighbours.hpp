@@ -11,12 +11,12 @@ namespace psph {
 template <int D>
 struct HostNeighbours {
   CellGrid<D> grid{};
-  std::vector<Vec<D>> x;
+  std::vector<Point<D>> x;
   std::vector<int> order, bucket_start, bucket_end;
-  Real support = 0;
+  Coord support = 0;
 
-  HostNeighbours(const std::vector<Vec<D>>& points, const Real* lo, const Real* hi, const bool* periodic,
-                 Real support_radius)
+  HostNeighbours(const std::vector<Point<D>>& points, const Coord* lo, const Coord* hi, const bool* periodic,
+                 Coord support_radius)
       : support(support_radius) {
     CellGrid<D>::make(lo, hi, periodic, support_radius, grid);
     const int n = static_cast<int>(points.size());
@@ -28,7 +28,7 @@ struct HostNeighbours {
     for (int k = 0; k < n; ++k) x[k] = points[order[k]];
   }
   NeighbourView<D> view() const {
-    return NeighbourView<D>{grid, x.data(), bucket_start.data(), bucket_end.data(), support * support};
+    return NeighbourView<D>{grid, x.data(), bucket_start.data(), bucket_end.data(), Real(support * support)};
   }
 };
 

@@ -13,7 +13,7 @@ namespace psph {
 template <int D>
 struct CellKeyPass {
   CellGrid<D> grid;
-  const Vec<D>* x;
+  const Point<D>* x;
   const std::uint8_t* material;
   MaterialTable<D> mats;
   int* key;

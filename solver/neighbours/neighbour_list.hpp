@@ -20,7 +20,7 @@ using ListOffset = std::int64_t;
 template <int D>
 struct NeighbourList {
   CellGrid<D> grid;
-  const Vec<D>* x;
+  const Point<D>* x;
   const int* index;
   const int* count;        // neighbours of i
   const int* fluid_count;  // of which fluid (listed first)
@@ -40,7 +40,7 @@ struct NeighbourList {
  private:
   template <class F>
   PSPH_HD PSPH_PAIR void visit(int i, int begin, int end, F& f) const {
-    const Vec<D> xi = x[i];
+    const Point<D> xi = x[i];
     const int* row = index + ListOffset(i) * stride_i;
     for (int k = begin; k < end; ++k) {
       const int j = row[ListOffset(k) * stride_k];
@@ -92,16 +92,16 @@ struct BuildNeighbourList {
   // rejected, unpredictably, and without that branch the 3D dam break's build takes a quarter less
   // time. On the GPU only kept pairs are written (not measured there yet).
   PSPH_HD int collect(int i, int b, int n, int* row) const {
-    const Vec<D> xi = cells.x[i];
-    const Vec<D>* x = cells.x;
-    const Real radius2 = cells.support2;
+    const Point<D> xi = cells.x[i];
+    const Point<D>* x = cells.x;
+    const Coord radius2 = cells.support2;  // the test in Coord: no conversion per candidate
     const int room = capacity;
     const ListOffset step = stride_k;
     const std::uint8_t* ghosts = ghost;
     cells.for_each_cell_in_reach(xi, [&](int key) {
       const int end = cells.bucket_end[2 * key + b];
       for (int j = cells.bucket_start[2 * key + b]; j < end; ++j) {
-        const int in = int(norm2(cells.grid.separation(xi, x[j])) < radius2) & int(j != i) &
+        const int in = int(norm2(cells.grid.offset(xi, x[j])) < radius2) & int(j != i) &
                        int(!is_retired_ghost(ghosts, j));
 #ifdef __CUDA_ARCH__
         if (in && n < room) row[ListOffset(n) * step] = j;  // a warp diverges; global writes cost more
@@ -119,9 +119,9 @@ struct BuildNeighbourList {
 template <int D>
 struct DisplacementSinceBuild {
   CellGrid<D> grid;
-  const Vec<D>* x;
-  const Vec<D>* x_build;
-  PSPH_HD Real operator()(int i) const { return norm(grid.separation(x[i], x_build[i])); }
+  const Point<D>* x;
+  const Point<D>* x_build;
+  PSPH_HD Real operator()(int i) const { return Real(norm(grid.offset(x[i], x_build[i]))); }
 };
 
 template <int D>

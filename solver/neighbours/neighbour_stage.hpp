@@ -34,15 +34,15 @@ class NeighbourStage {
   CellGrid<D> setup(const double lower[], const double upper[], const bool periodic[], double support, double skin) {
     support_ = support;
     radius_ = support * (1 + skin);
-    Real lo[D], hi[D];
+    Coord lo[D], hi[D];
     bool per[D];
     for (int k = 0; k < D; ++k) {
-      lo[k] = Real(lower[k]), hi[k] = Real(upper[k]), per[k] = periodic[k];
+      lo[k] = Coord(lower[k]), hi[k] = Coord(upper[k]), per[k] = periodic[k];
       if (per[k]) radius_ = std::min(radius_, (upper[k] - lower[k]) / 3);
     }
     radius_ = std::max(radius_, support);
     CellGrid<D> grid{};
-    if (!CellGrid<D>::make(lo, hi, per, Real(radius_), grid))
+    if (!CellGrid<D>::make(lo, hi, per, Coord(radius_), grid))
       throw std::invalid_argument("a periodic axis is shorter than 3 support radii");
     bucket_start_.resize(2 * grid.total), bucket_end_.resize(2 * grid.total);
     fluid_lo_.resize(grid.total), fluid_hi_.resize(grid.total), cell_near_.resize(grid.total);
@@ -58,11 +58,11 @@ class NeighbourStage {
   }
 
   // The cell ranges of the last sort, for searches beyond the lists (open-boundary buffers).
-  NeighbourView<D> cells(const CellGrid<D>& grid, const Vec<D>* x) const {
+  NeighbourView<D> cells(const CellGrid<D>& grid, const Point<D>* x) const {
     return NeighbourView<D>{grid, x, bucket_start_.data(), bucket_end_.data(), Real(radius_ * radius_)};
   }
   // The lists, visited with positions x (the current ones, or a solid's reference positions).
-  NeighbourList<D> list(const CellGrid<D>& grid, const Vec<D>* x, Real support) const {
+  NeighbourList<D> list(const CellGrid<D>& grid, const Point<D>* x, Real support) const {
     return NeighbourList<D>{grid, x, index_.data(), count_.data(), fluid_count_.data(), stride_i(), stride_k(),
                             support * support};
   }
@@ -75,7 +75,7 @@ class NeighbourStage {
              bool every_particle) {
     const StageScope scope("neighbours");
     sort_and_list(s, grid, mats, needs, every_particle);
-    B::copy(x_build_.data(), s.x.data(), sizeof(Vec<D>) * s.size());
+    B::copy(x_build_.data(), s.x.data(), sizeof(Point<D>) * s.size());
   }
 
   // After a restore: the lists of the saved build positions (the state is in their cell order
@@ -142,8 +142,8 @@ class NeighbourStage {
   int capacity_ = 32;
   DeviceArray<int, B> keys_, perm_, bucket_start_, bucket_end_;
   DeviceArray<int, B> index_, count_, fluid_count_;
-  DeviceArray<Vec<D>, B> x_build_;  // positions at the last list build
-  DeviceArray<Vec<D>, B> fluid_lo_, fluid_hi_;  // each cell's fluid box (neighbours/fluid_proximity.hpp)
+  DeviceArray<Point<D>, B> x_build_;  // positions at the last list build
+  DeviceArray<Point<D>, B> fluid_lo_, fluid_hi_;  // each cell's fluid box (neighbours/fluid_proximity.hpp)
   DeviceArray<std::uint8_t, B> cell_near_;     // fluid in a cell's stencil
 };
 

@@ -17,7 +17,7 @@ namespace psph {
 template <int D>
 struct ReferenceNeighbours {
   CellGrid<D> grid;
-  const Vec<D>* x0;
+  const Point<D>* x0;
   const std::int32_t* index_of_id;
   const std::int32_t* ids;    // particle i's row: ids[i * capacity ...]
   const std::int32_t* count;  // per particle
@@ -25,7 +25,7 @@ struct ReferenceNeighbours {
   Real support2;
   template <class F>
   PSPH_HD PSPH_PAIR void for_each(int i, F&& f) const {
-    const Vec<D> xi = x0[i];
+    const Point<D> xi = x0[i];
     for (int k = 0; k < count[i]; ++k) {
       const int j = index_of_id[ids[ListOffset(i) * capacity + k]];
       const Vec<D> d = grid.separation(xi, x0[j]);

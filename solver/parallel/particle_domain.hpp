@@ -307,7 +307,7 @@ class ParticleDomain {
   bool near_me(const double* x) const { return cuts_.distance2(x, cuts_.box(comm_.rank())) < width_ * width_; }
 
   static std::vector<double> positions(const ParticleState<D, B>& s) {
-    const std::vector<Vec<D>> h = s.x.host();
+    const std::vector<Point<D>> h = s.x.host();
     std::vector<double> x(h.size() * D);
     for (std::size_t i = 0; i < h.size(); ++i)
       for (int k = 0; k < D; ++k) x[i * D + k] = double(h[i][k]);

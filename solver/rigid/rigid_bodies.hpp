@@ -63,6 +63,7 @@ struct SceneRigidBodies {
   std::vector<RigidBodyState> state;          // at t = 0
   std::vector<std::vector<int>> members;      // particle indices (= ids) of each body
   std::vector<std::vector<Vec3d>> offsets;    // each member's position relative to the centre of mass
+  std::vector<Vec3d> weight;                  // each body's mass times its material's body force (N)
 };
 
 // Mass, centre of mass (eq. 62) and inertia (eq. 64) of point masses m at positions x (3 per

@@ -24,7 +24,8 @@ PSPH_HD inline void cross_lifted(const Real a[3], const Vec<D>& b_d, Real out[3]
 
 template <int D>
 struct RigidPose {
-  Vec<D> centre, velocity;
+  Point<D> centre;
+  Vec<D> velocity;
   Mat<D> rotation;
   Real omega[3];  // world frame; in 2D only omega[2]
   PSPH_HD Vec<D> velocity_at(const Vec<D>& arm) const {  // V + omega x arm
@@ -50,14 +51,18 @@ struct RigidPlacePass {
     if (i < 0) return;  // held by another process
     const RigidPose<D>& p = pose[body_of[k]];
     const Vec<D> arm = p.rotation * offset[k];
-    s.x[i] = grid.wrap(p.centre + arm);
+    s.x[i] = grid.wrap(p.centre + to_coord(arm));
     s.v[i] = p.velocity_at(arm);
   }
 };
 
-// m_i a_i and its moment about the centre of mass (torque: z only in 2D), summed over one body.
+// m_i (a_i - g_i) and its moment about the centre of mass (torque: z only in 2D), summed over one
+// body in double. The body force g_i is left out of the sum: the body's weight M g, exact in double
+// (RigidStage::sum_loads), would otherwise come back with the rounding of g and of every particle's
+// share in Real (in mixed precision a free fall's relative error is then ~1e-7; it is 1e-16 so).
 struct RigidLoadSum {
-  Real f[3] = {0, 0, 0}, t[3] = {0, 0, 0};
+  using component_type = double;
+  double f[3] = {0, 0, 0}, t[3] = {0, 0, 0};
   PSPH_HD RigidLoadSum& operator+=(const RigidLoadSum& o) {
     for (int k = 0; k < 3; ++k) f[k] += o.f[k], t[k] += o.t[k];
     return *this;
@@ -70,16 +75,19 @@ struct RigidLoadOf {
   const std::int32_t* ids;  // the body's entries
   const Vec<D>* offset;
   Mat<D> rotation;
+  MaterialTable<D> mats;
   const std::uint8_t* owned;  // this process's particles (null: all): each member counts once
   PSPH_HD RigidLoadSum operator()(int k) const {
     const int i = s.index_of_id[ids[k]];
     if (i < 0 || (owned && !owned[i])) return RigidLoadSum{};
-    const Vec<D> f = s.a[i] * s.m[i];
+    const Vec<D> f = (s.a[i] - mats.body_force[s.material[i]]) * s.m[i];
     const Vec<D> r = rotation * offset[k];
+    Real arm[3] = {0, 0, 0}, t[3];
+    for (int d = 0; d < D; ++d) arm[d] = r[d];  // the arm, lifted to 3D
+    cross_lifted<D>(arm, f, t);  // r x f: z only in 2D, none in 1D
     RigidLoadSum l;
-    for (int d = 0; d < D; ++d) l.f[d] = f[d], l.t[d] = r[d];  // the arm, lifted to 3D
-    const Real arm[3] = {l.t[0], l.t[1], l.t[2]};
-    cross_lifted<D>(arm, f, l.t);  // r x f: z only in 2D, none in 1D
+    for (int d = 0; d < D; ++d) l.f[d] = double(f[d]);
+    for (int d = 0; d < 3; ++d) l.t[d] = double(t[d]);
     return l;
   }
 };

@@ -28,6 +28,7 @@ class RigidStage {
              const double periodic_length[]) {
     if (rb.state.empty()) return;
     bodies_ = RigidBodies(D, rb.state);
+    weight_ = rb.weight;
     std::vector<std::int32_t> ids, body_of;
     std::vector<Vec<D>> off;
     for (std::size_t b = 0; b < rb.members.size(); ++b) {
@@ -78,8 +79,8 @@ class RigidStage {
       for (int k = 0; k < D; ++k)
         for (int l = 0; l < D; ++l) R.a[k][l] = Real(bodies_.body(b).rotation[3 * k + l]);
       const RigidLoadSum sum = cx.template sum_over<RigidLoadSum>(
-          begin_[b + 1] - begin_[b], RigidLoadOf<D>{cx.view(), ids_.data() + begin_[b], offset_.data() + begin_[b], R, cx.owned()});
-      for (int k = 0; k < 3; ++k) load_[b].force[k] = double(sum.f[k]), load_[b].torque[k] = double(sum.t[k]);
+          begin_[b + 1] - begin_[b], RigidLoadOf<D>{cx.view(), ids_.data() + begin_[b], offset_.data() + begin_[b], R, cx.mats, cx.owned()});
+      for (int k = 0; k < 3; ++k) load_[b].force[k] = sum.f[k] + weight_[b][k], load_[b].torque[k] = sum.t[k];
     }
   }
 
@@ -124,7 +125,7 @@ class RigidStage {
       for (int k = 0; k < D; ++k) {
         double c = st.centre[k];  // into the domain on periodic axes; the particles wrap after
         if (length_[k] > 0) c -= length_[k] * std::floor((c - lower_[k]) / length_[k]);
-        p.centre[k] = Real(c), p.velocity[k] = Real(st.velocity[k]);
+        p.centre[k] = Coord(c), p.velocity[k] = Real(st.velocity[k]);
         for (int l = 0; l < D; ++l) p.rotation.a[k][l] = Real(st.rotation[3 * k + l]);
       }
       for (int k = 0; k < 3; ++k) p.omega[k] = Real(w[k]);
@@ -142,6 +143,7 @@ class RigidStage {
   DeviceArray<Vec<D>, B> offset_;
   DeviceArray<RigidPose<D>, B> pose_;
   std::vector<RigidLoad> load_;
+  std::vector<Vec3d> weight_;  // M g of each body, exact (rigid/rigid_body.hpp RigidLoadSum)
   double lower_[D] = {}, length_[D] = {};
 };
 

@@ -25,8 +25,8 @@ namespace psph {
 // far less than any periodic length, so no image is needed).
 template <int D>
 PSPH_HD inline Vec<D> clamp_normal(const ParticleView<D>& s, int w, int p) {
-  const Vec<D> d = s.x0[p] - s.x0[w];
-  return d * (Real(1) / std::sqrt(dot(d, d)));
+  const Vec<D> d = to_real(s.x0[p] - s.x0[w]);
+  return d * (Real(1) / sqrt(dot(d, d)));
 }
 
 // The id of a particle whose clamp partner is not on this process (-1: none); a run over several
@@ -49,11 +49,11 @@ struct ClampDisplacementPass {
     if (p < 0) return;  // a halo copy whose partner another process holds (parallel/): not read
     if (is_retired_ghost(s.ghost, p)) return;  // a damage ghost's wall clamps nothing (damage/ghosts.hpp)
     if (!mats[s.material[i]].slip_clamp) {
-      s.u[i] = s.u[i] * Real(2) - s.u[p];
+      s.u[i] = s.u[i] * Coord(2) - s.u[p];
       return;
     }
-    const Vec<D> n = clamp_normal(s, i, p);
-    s.u[i] = s.u[p] + n * (Real(2) * dot(s.u[i] - s.u[p], n));
+    const Point<D> n = to_coord(clamp_normal(s, i, p));
+    s.u[i] = s.u[p] + n * (Coord(2) * dot(s.u[i] - s.u[p], n));
   }
 };
 

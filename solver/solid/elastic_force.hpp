@@ -46,7 +46,7 @@ struct DisplacementPass {
   static constexpr FieldNames writes{"displacement"};
   ParticleView<D> s;
   CellGrid<D> grid;
-  PSPH_HD void operator()(int i) const { s.u[i] = grid.separation(s.x[i], s.x0[i]); }
+  PSPH_HD void operator()(int i) const { s.u[i] = grid.offset(s.x[i], s.x0[i]); }
 };
 
 // One pair's bracket of the sum above: times V_j F_ij it is pair j's part of rho a_i.
@@ -75,7 +75,7 @@ struct ElasticForcePass {
   PSPH_HD Vec<D> elastic_acceleration(int i) const {
     const int mi = c.s.material[i];
     const Real k_i = bulk(i, mi), mu_i = shear(i, mi);
-    const Vec<D> u_i = c.s.u[i];
+    const Point<D> u_i = c.s.u[i];
     Vec<D> f = Vec<D>::zero();
     c.nb.for_each(i, [&](int j, const Vec<D>& rij, Real r) PSPH_PAIR {
       const int mj = c.s.material[j];
@@ -83,7 +83,7 @@ struct ElasticForcePass {
       Real k = k_i, mu = mu_i;  // walls (clamps) present the particle's own moduli
       if (c.mats.is_elastic(mj) && (mj != mi || moduli.bulk))
         k = harmonic_mean(k_i, bulk(j, mj)), mu = harmonic_mean(mu_i, shear(j, mj));
-      f += navier_pair<D>(u_i - c.s.u[j], rij * (Real(1) / r), k, mu) * (solid_sum_volume(c.s, j) * c.kern.F(r));
+      f += navier_pair<D>(to_real(u_i - c.s.u[j]), rij * (Real(1) / r), k, mu) * (solid_sum_volume(c.s, j) * c.kern.F(r));
     });
     return f * (Real(1) / c.s.rho[i]);
   }
@@ -103,7 +103,7 @@ struct ElasticEnergyOf {
   ElasticForcePass<D> pass;
   PSPH_HD Real operator()(int i) const {
     if (!pass.c.mats.is_elastic(pass.c.s.material[i])) return Real(0);
-    return Real(-0.5) * pass.c.s.m[i] * dot(pass.c.s.u[i], pass.elastic_acceleration(i));
+    return Real(-0.5) * pass.c.s.m[i] * dot(to_real(pass.c.s.u[i]), pass.elastic_acceleration(i));
   }
 };
 

@@ -47,7 +47,7 @@ class ElasticStage {
     s.add_field(s.stress, D * D, "stress", "Pa", "Cauchy stress (tension positive), row-major");
     s.mirror.upload(mirror);
     s.add_field(s.mirror, 1, "clamp_mirror", "-", "id of a clamp wall's mirror partner and back, -1 if none");
-    B::copy(s.x0.data(), s.x.data(), sizeof(Vec<D>) * n);
+    B::copy(s.x0.data(), s.x.data(), sizeof(Point<D>) * n);
     if (large_strain()) {
       // The Piola stress of the strain pass is recomputed before every use: not registered. The
       // fluid reads a solid's volume det F before the next strain pass, so F must follow

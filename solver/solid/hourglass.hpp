@@ -31,7 +31,7 @@ template <int D>
 PSPH_HD PSPH_PAIR inline Vec<D> hourglass_share(const ParticleView<D>& s, const MaterialTable<D>& mats,
                                                 const Kernel<D>& kern, Real young_i, int i, int j,
                                                 const Vec<D>& x_ij, Real r, Real v_j) {
-  const Vec<D> u_ij = s.u[i] - s.u[j];
+  const Vec<D> u_ij = to_real(s.u[i] - s.u[j]);
   const Vec<D> X_ij = x_ij - u_ij;
   const Real R2 = dot(X_ij, X_ij);
   if (R2 <= Real(0)) return Vec<D>::zero();

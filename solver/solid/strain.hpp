@@ -75,7 +75,7 @@ struct StrainStressPass {
         corrections_kept ? stored_correction(c.s, i) : SolidCorrectionPass<D, NB>{c}.correction(i);
     CorrectedGradientSum<D> sum;
     solid.for_each(i, [&](int j, const Vec<D>& rij, Real r) {
-      sum.add(c.s.u[j] - c.s.u[i], c.kern.W(r), c.kern.grad(rij, r), volume(j));
+      sum.add(to_real(c.s.u[j] - c.s.u[i]), c.kern.W(r), c.kern.grad(rij, r), volume(j));
     });
     const Mat<D> grad_u = sum.corrected(corr);
     if (c.s.grad_u) c.s.grad_u[i] = grad_u;

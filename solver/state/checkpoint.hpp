@@ -4,6 +4,7 @@
 // bitwise identically to the run that wrote it (io/checkpoint_file.hpp stores it). In a run over
 // several processes each holds a slice of it: particles first .. first + count - 1 of one
 // process's order, written together into one file; read back, a checkpoint is whole.
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,7 @@ struct Checkpoint {
   int dimension = 0;
   int particles = 0;  // in the whole run
   long long first = 0;  // the slice's first particle
-  std::string precision;  // "double" or "single"
+  std::string precision;  // "double", "mixed" or "single"
   double time = 0, last_dt = 0, first_dt = 0;
   long steps = 0;
   double dissipated_energy = 0;  // by the solids' damping, from the run's start (J)
@@ -41,5 +42,32 @@ struct Checkpoint {
     return f;
   }
 };
+
+// A checkpoint written in another precision with its real fields converted, component by component,
+// to the sizes that `fields` (this build's registry) stores: double to float rounds to nearest,
+// float to double is exact. A field whose components are unknown (the raw format) is left as it
+// is, and the restore then refuses its size, naming it.
+inline Checkpoint with_precision_of(const Checkpoint& c, const FieldRegistry& fields, const std::string& precision) {
+  Checkpoint out = c;
+  out.precision = precision;
+  for (CheckpointField& cf : out.fields) {
+    if (cf.type != FieldType::Real || cf.components <= 0 || !fields.has(cf.name)) continue;
+    const std::size_t to = fields.get(cf.name).element_bytes / std::size_t(cf.components);
+    const std::size_t from = cf.element_bytes / std::size_t(cf.components);
+    if (to == from || (to != 4 && to != 8) || (from != 4 && from != 8)) continue;
+    const std::size_t values = cf.bytes.size() / from;
+    std::vector<unsigned char> bytes(values * to);
+    for (std::size_t k = 0; k < values; ++k) {
+      double v;
+      if (from == 8) std::memcpy(&v, cf.bytes.data() + k * 8, 8);
+      else { float f; std::memcpy(&f, cf.bytes.data() + k * 4, 4); v = double(f); }
+      if (to == 8) std::memcpy(bytes.data() + k * 8, &v, 8);
+      else { const float f = float(v); std::memcpy(bytes.data() + k * 4, &f, 4); }
+    }
+    cf.bytes.swap(bytes);
+    cf.element_bytes = to * std::size_t(cf.components);
+  }
+  return out;
+}
 
 }  // namespace psph

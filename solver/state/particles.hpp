@@ -13,10 +13,20 @@
 
 namespace psph {
 
+// The scalar a field's values are made of (a vector's or matrix's components).
+template <class T>
+struct Scalar { using type = T; };
+template <class T, int D>
+struct Scalar<VecT<T, D>> { using type = T; };
+template <int D>
+struct Scalar<Mat<D>> { using type = Real; };
+template <class T>
+using ScalarOf = typename Scalar<T>::type;
+
 template <int D>
 struct ParticleView {
   int n = 0;
-  Vec<D>* x = nullptr;          // position
+  Point<D>* x = nullptr;        // position
   Vec<D>* v = nullptr;          // velocity (prescribed for walls)
   Vec<D>* a = nullptr;          // acceleration
   Vec<D>* v_xsph = nullptr;     // XSPH correction added to the drift velocity
@@ -36,8 +46,8 @@ struct ParticleView {
   Vec<D>* colour_gradient = nullptr;  // n = grad c (eq. 59a)
   Real* curvature = nullptr;          // kappa = -div n^ (eqs. 7, 60)
   // Elastic solids only (null otherwise): solid/elastic_force.hpp.
-  Vec<D>* x0 = nullptr;  // reference (initial) position
-  Vec<D>* u = nullptr;   // displacement x - x0
+  Point<D>* x0 = nullptr;  // reference (initial) position
+  Point<D>* u = nullptr;   // displacement x - x0
   Mat<D>* strain = nullptr;  // small strain (solid/strain.hpp)
   Mat<D>* stress = nullptr;  // Cauchy stress
   Real* shepard = nullptr;   // the gradient correction S_i, G_i, K_i of the strain pass (solid/strain.hpp)
@@ -190,7 +200,8 @@ class ParticleState {
     for (const auto& f : registry_.all()) f.permute(perm);
   }
 
-  DeviceArray<Vec<D>, B> x, v, a, v_xsph, v_noslip, lap_v;
+  DeviceArray<Point<D>, B> x;
+  DeviceArray<Vec<D>, B> v, a, v_xsph, v_noslip, lap_v;
   DeviceArray<Real, B> rho, drho, p, m, rho0, number_density;
   DeviceArray<std::uint8_t, B> material;
   DeviceArray<std::int32_t, B> id;
@@ -199,7 +210,7 @@ class ParticleState {
   DeviceArray<Real, B> colour, curvature;
   DeviceArray<Vec<D>, B> colour_gradient;
   // the elastic stage's (solid/elastic_stage.hpp),
-  DeviceArray<Vec<D>, B> x0, u;
+  DeviceArray<Point<D>, B> x0, u;
   DeviceArray<Mat<D>, B> strain, stress;
   DeviceArray<Real, B> shepard;  // the strain pass's correction (each step, or kept from the list build): not registered
   DeviceArray<Vec<D>, B> shepard_grad;
@@ -229,8 +240,7 @@ class ParticleState {
     h.to_host_double = [&arr, comps](std::vector<double>& out) {
       const std::vector<T> hv = arr.host();
       out.resize(hv.size() * static_cast<std::size_t>(comps));
-      constexpr bool real_tuple = std::is_same_v<T, Vec<D>> || std::is_same_v<T, Mat<D>>;
-      const auto* raw = reinterpret_cast<const std::conditional_t<real_tuple, Real, T>*>(hv.data());
+      const auto* raw = reinterpret_cast<const ScalarOf<T>*>(hv.data());
       for (std::size_t k = 0; k < out.size(); ++k) out[k] = static_cast<double>(raw[k]);
     };
     h.element_bytes = sizeof(T);
@@ -283,6 +293,7 @@ class ParticleState {
   template <class T>
   DeviceArray<T, B>& scratch() {
     if constexpr (std::is_same_v<T, Vec<D>>) return scratch_vec_;
+    else if constexpr (std::is_same_v<T, Point<D>>) return scratch_point_;
     else if constexpr (std::is_same_v<T, Mat<D>>) return scratch_mat_;
     else if constexpr (std::is_same_v<T, Real>) return scratch_real_;
     else if constexpr (std::is_same_v<T, std::uint8_t>) return scratch_u8_;
@@ -309,6 +320,7 @@ class ParticleState {
   int n_ = 0;
   FieldRegistry registry_;
   DeviceArray<Vec<D>, B> scratch_vec_;
+  DeviceArray<Point<D>, B> scratch_point_;  // used where Coord is not Real (mixed precision)
   DeviceArray<Mat<D>, B> scratch_mat_;
   DeviceArray<Real, B> scratch_real_;
   DeviceArray<std::uint8_t, B> scratch_u8_;

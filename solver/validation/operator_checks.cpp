@@ -20,14 +20,14 @@ std::vector<double> deptulski_table_2_1_pairs() {
   // Bar L = 1 m, N = 5 cell-centred points at 50.1 ... 50.9 m, V_b = 0.2 m; "h = 2.8 dx" read as a
   // support radius of 0.56 m (cubic spline with smoothing length 1.4 dx), Deptulski
   // §2.5: his h here is not the spline's; read as the support, it reproduces Table 2.1.
-  std::vector<Vec<1>> pts(5);
-  for (int i = 0; i < 5; ++i) pts[i][0] = Real(50.1 + 0.2 * i);
-  const Real lo[1] = {Real(50.0)}, hi[1] = {Real(51.0)};
+  std::vector<Point<1>> pts(5);
+  for (int i = 0; i < 5; ++i) pts[i][0] = Coord(50.1 + 0.2 * i);
+  const Coord lo[1] = {Coord(50.0)}, hi[1] = {Coord(51.0)};
   const bool per[1] = {false};
-  HostNeighbours<1> nb(pts, lo, hi, per, Real(0.56));
+  HostNeighbours<1> nb(pts, lo, hi, per, Coord(0.56));
   const Kernel<1> kern = Kernel<1>::make(KernelType::CubicSpline, Real(0.56));
   auto volume = [](int) { return Real(0.2); };
-  auto field = [&](int k) { return Real(20) * nb.x[k][0]; };
+  auto field = [&](int k) { return 20 * double(nb.x[k][0]); };  // in double: differences of values near 1000
   int a = 0;  // stored index of point 4 (x = 50.7)
   for (int k = 0; k < 5; ++k)
     if (nb.order[k] == 3) a = k;
@@ -36,7 +36,7 @@ std::vector<double> deptulski_table_2_1_pairs() {
   nb.view().for_each(a, [&](int b, const Vec<1>& rab, Real r) {
     const Vec<1> g = corr.gradient(kern.W(r), kern.grad(rab, r));
     const int point = nb.order[b] + 1;  // 1-based point number of the table
-    if (point >= 2 && point <= 5) pairs[point - 2] = double(volume(b) * (field(b) - field(a)) * g[0]);
+    if (point >= 2 && point <= 5) pairs[point - 2] = double(volume(b)) * (field(b) - field(a)) * double(g[0]);
   });
   return pairs;  // the 4-4 entry stays 0 (no self pair)
 }
@@ -50,14 +50,14 @@ DivergenceErrors quartic_divergence_in(int per_axis, double jitter, unsigned see
   for (int d = 0; d < D; ++d) n *= per_axis;
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> shift(-jitter * dx, jitter * dx);
-  std::vector<Vec<D>> pts(n);
+  std::vector<Point<D>> pts(n);
   for (int k = 0; k < n; ++k)
-    for (int d = 0, r = k; d < D; ++d, r /= per_axis) pts[k][d] = Real(50 + (r % per_axis + 0.5) * dx + shift(rng));
-  Real lo[D], hi[D];
+    for (int d = 0, r = k; d < D; ++d, r /= per_axis) pts[k][d] = Coord(50 + (r % per_axis + 0.5) * dx + shift(rng));
+  Coord lo[D], hi[D];
   bool per[D];
-  for (int d = 0; d < D; ++d) lo[d] = Real(50 - dx), hi[d] = Real(51 + dx), per[d] = false;
+  for (int d = 0; d < D; ++d) lo[d] = Coord(50 - dx), hi[d] = Coord(51 + dx), per[d] = false;
   const Real support = Real(0.56);
-  HostNeighbours<D> nb(pts, lo, hi, per, support);
+  HostNeighbours<D> nb(pts, lo, hi, per, Coord(support));
   const Kernel<D> kern = Kernel<D>::make(KernelType::CubicSpline, support);
   const Real volume_each = Real(std::pow(dx, D));
   auto volume = [&](int) { return volume_each; };
