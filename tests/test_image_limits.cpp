@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "image/image_error.hpp"
 #include "image/image_memory.hpp"
@@ -26,8 +27,10 @@ namespace {
 
 constexpr const char* kLimit = "PORESPH_IMAGE_MEMORY_LIMIT";
 
+// A folder of this process's own: ctest runs each test as a process, several at once, and two that
+// wrote the same file raced (one read a file the other had just truncated).
 std::string temp(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "poresph_test_image_limits";
+  const fs::path dir = fs::temp_directory_path() / ("poresph_test_image_limits_" + std::to_string(getpid()));
   fs::create_directories(dir);
   return (dir / name).string();
 }
