@@ -5,9 +5,11 @@
 # mixed one in double, converted and said in log.txt; and the mixed continuation of the double run
 # ends where the double run ends, to float's digits; a case whose kernel derivatives pass float's
 # range (the claystone cell's nanometre support) is refused by the mixed build at check.
-# Usage: mixed_precision_cli.sh PORESPH_DOUBLE PORESPH_MIXED SRC WORK
+# With MPIEXEC, a mixed two-phase run over 2 processes, its domain cut anew at every list build,
+# writes exactly one process's monitors (migrations and halos carry the double positions).
+# Usage: mixed_precision_cli.sh PORESPH_DOUBLE PORESPH_MIXED SRC WORK [MPIEXEC]
 set -u
-double=$(realpath "$1") mixed=$(realpath "$2") src=$(realpath "$3") work=$4
+double=$(realpath "$1") mixed=$(realpath "$2") src=$(realpath "$3") work=$4 mpiexec=${5:-}
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 fail() { echo "mixed precision: $*" >&2; exit 1; }
 export OMP_NUM_THREADS=1
@@ -20,6 +22,15 @@ sed 's/^end = 0.5/end = 0.04/; s/^extract_interval = .*/extract_interval = 0/' "
 "$mixed" run short.toml --out mixed_first --quiet > /dev/null || fail "the short mixed run failed"
 grep -q "mixed precision" mixed_first/log.txt || fail "log.txt does not say mixed: $(head -5 mixed_first/log.txt)"
 grep -q '"precision": "mixed"' mixed_first/summary.json || fail "summary.json does not say mixed"
+if [ -n "$mpiexec" ]; then  # the domain cut anew at every list build: particles migrate
+  drop=(run "$src/cases/sessile_drop_2d.toml" --set time.end=0.02 --set solver.rebalance_imbalance=1.0
+        --set output.extract_interval=0 --quiet)
+  OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 \
+    timeout 120 "$mpiexec" -n 2 "$mixed" "${drop[@]}" --out mixed_two > /dev/null 2>&1 || fail "the mixed run on 2 processes failed or hung"
+  "$mixed" "${drop[@]}" --out mixed_one > /dev/null || fail "the mixed run on 1 process failed"
+  grep -q '"rebalances": [1-9]' mixed_two/summary.json || fail "the 2-process run never cut the domain anew"
+  cmp -s mixed_one/monitors.csv mixed_two/monitors.csv || fail "mixed: 2 processes' monitors.csv differs from one's"
+fi
 
 "$mixed" run longer.toml --restart double_first --out mixed_resumed --quiet > /dev/null || fail "the mixed restart of a double checkpoint failed"
 grep -q "written in double precision: its real fields converted to mixed" mixed_resumed/log.txt ||

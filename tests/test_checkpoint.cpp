@@ -182,6 +182,14 @@ TEST(Checkpoint, ConvertsBetweenPrecisions) {
     b->step(1e9);
     EXPECT_EQ(b->steps(), 11);
   }
+  // The raw format does not say its fields' components: another precision's is refused, named.
+  const std::string raw = temp_file("psph_ck_other_precision.ckpt");
+  write_raw_checkpoint_file(raw, a->checkpoint(), c.name);
+  Checkpoint other = read_checkpoint_file(raw);
+  other.precision = sizeof(Real) == 8 ? "single" : "double";
+  const std::string why = error_of([&] { make_cpu_engine(c.scene)->restore(other); });
+  EXPECT_NE(why.find("written in " + other.precision + " precision in the raw format"), std::string::npos) << why;
+  fs::remove(raw);
 }
 
 TEST(Checkpoint, RefusesAnotherScene) {

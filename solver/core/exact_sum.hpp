@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "core/config.hpp"
+#include "core/vec.hpp"
 
 namespace psph {
 
@@ -111,12 +112,15 @@ class ExactSum {
   int special_ = 0;
 };
 
-// What a reduction's value type is made of: a floating-point scalar itself; a struct its
-// `component_type` where it names one (RigidLoadSum: double), otherwise Real (Vec, BandSums).
+// What a reduction's value type is made of: a floating-point scalar itself; a vector its
+// components' type (Vec: Real, Point: Coord); a struct its `component_type` where it names one
+// (RigidLoadSum: double), otherwise Real (BandSums).
 template <class T, class = void>
 struct ComponentOf { using type = Real; };
 template <class T>
 struct ComponentOf<T, std::enable_if_t<std::is_floating_point_v<T>>> { using type = T; };
+template <class T, int D>
+struct ComponentOf<VecT<T, D>, void> { using type = T; };
 template <class T>
 struct ComponentOf<T, std::void_t<typename T::component_type>> { using type = typename T::component_type; };
 

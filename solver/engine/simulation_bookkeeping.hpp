@@ -326,7 +326,13 @@ Checkpoint Simulation<D, B>::checkpoint() {
 // converted first (state/checkpoint.hpp); the run's log says so (app/run_driver.cpp).
 template <int D, class B>
 void Simulation<D, B>::restore(const Checkpoint& c) {
-  if (c.precision != precision_name()) return restore(with_precision_of(c, cx_.s.fields(), precision_name()));
+  if (c.precision != precision_name()) {
+    for (const CheckpointField& f : c.fields)
+      if (f.components <= 0)  // the raw format: no field says its components
+        throw std::invalid_argument("the checkpoint was written in " + c.precision + " precision in the raw format, which "
+                                    "cannot be converted to " + precision_name() + ": restart it with a " + c.precision + " build");
+    return restore(with_precision_of(c, cx_.s.fields(), precision_name()));
+  }
   auto differs = [](const std::string& what, const std::string& ours, const std::string& theirs) {
     throw std::invalid_argument("the checkpoint " + what + " (" + theirs + ") differs from the case's (" + ours + ")");
   };

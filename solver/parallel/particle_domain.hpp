@@ -240,7 +240,7 @@ class ParticleDomain {
     }
     std::vector<double> positions() const {
       std::vector<double> x(std::size_t(n_) * D);
-      const Real* r = reinterpret_cast<const Real*>(data_[xfield_].data());
+      const Coord* r = reinterpret_cast<const Coord*>(data_[xfield_].data());  // the field's Point<D> values
       for (std::size_t k = 0; k < x.size(); ++k) x[k] = double(r[k]);
       return x;
     }
