@@ -182,10 +182,21 @@ TEST(Checkpoint, ConvertsBetweenPrecisions) {
     b->step(1e9);
     EXPECT_EQ(b->steps(), 11);
   }
-  // The raw format does not say its fields' components: another precision's is refused, named.
+  // The raw format keeps each field's type, components and unit.
   const std::string raw = temp_file("psph_ck_other_precision.ckpt");
-  write_raw_checkpoint_file(raw, a->checkpoint(), c.name);
+  const Checkpoint written = a->checkpoint();
+  write_raw_checkpoint_file(raw, written, c.name);
   Checkpoint other = read_checkpoint_file(raw);
+  ASSERT_EQ(other.fields.size(), written.fields.size());
+  for (std::size_t f = 0; f < other.fields.size(); ++f) {
+    EXPECT_EQ(other.fields[f].type, written.fields[f].type) << written.fields[f].name;
+    EXPECT_EQ(other.fields[f].components, written.fields[f].components) << written.fields[f].name;
+    EXPECT_EQ(other.fields[f].unit, written.fields[f].unit) << written.fields[f].name;
+  }
+  // An earlier raw file said none of them: in another precision it is refused, named.
+  for (CheckpointField& f : other.fields) f.components = 0, f.type = FieldType::Byte, f.unit.clear();
+  write_raw_checkpoint_file(raw, other, c.name);
+  other = read_checkpoint_file(raw);
   other.precision = sizeof(Real) == 8 ? "single" : "double";
   const std::string why = error_of([&] { make_cpu_engine(c.scene)->restore(other); });
   EXPECT_NE(why.find("written in " + other.precision + " precision in the raw format"), std::string::npos) << why;

@@ -10,6 +10,7 @@
 
 #include "app/interrupts.hpp"
 #include "app/profile_report.hpp"
+#include "core/length_unit.hpp"
 #include "image/image_report.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/durable_file.hpp"
@@ -138,6 +139,10 @@ void RunDriver::plan_outputs() {
   head << "poresph run " << c_.file << ": case " << c_.name << ", " << engine_->particles() << " particles, "
        << c_.scene.dimension << "D, backend " << engine_->backend() << " (" << engine_->device() << "), "
        << precision_name() << " precision, end time " << c_.end_time << " s";
+  const LengthUnit unit = engine_length_unit(c_.scene.options.support_radius, c_.scene.dimension);
+  if (!unit.si())
+    head << "; the engine runs in a length unit of 2^" << unit.exponent << " m = " << unit.metres()
+         << " m (core/length_unit.hpp), its outputs in SI";
   log(head.str());
   for (const auto& image : c_.images) {
     const std::string text = image_report_text(image);

@@ -101,7 +101,7 @@ class DamageStage {
     out.push_back({"damaged_particles", double(cx.template sum_of<Real>(DamagedOf{damage_.data()}))});
     out.push_back({"total_damage", double(cx.template sum_of<Real>(DamageOf{damage_.data()}))});
     if (!law_.rankine)
-      out.push_back({"damage_energy", double(cx.template sum_of<Real>(DamageEnergyOf<D>{cx.view(), law_, damage_.data()}))});
+      out.push_back({"damage_energy", double(cx.template sum_of<Real>(DamageEnergyOf<D>{cx.view(), law_, damage_.data()})), "J"});
   }
 
  private:

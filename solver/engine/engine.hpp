@@ -56,6 +56,8 @@ class Engine {
   // process's order, the slices in process order (every process calls); one process: field(name).
   virtual std::vector<double> field_slice(const std::string& name) { return field(name); }
   virtual std::vector<std::string> field_names() const = 0;
+  // The SI unit of a field of field_names() (the registry's, state/fields.hpp).
+  virtual std::string field_unit(const std::string& name) const = 0;
   virtual std::string backend() const = 0;
   virtual std::string device() const = 0;
   // Mean number of neighbours (r < support) per fluid or elastic particle.
@@ -86,9 +88,8 @@ std::unique_ptr<Engine> make_cpu_engine(const Scene& scene, Communicator& comm =
 std::unique_ptr<Engine> make_cuda_engine(const Scene& scene, Communicator& comm = world());  // throws without CUDA
 bool cuda_available();  // built with CUDA and a device present
 
-inline std::unique_ptr<Engine> make_engine(const Scene& scene, const std::string& backend, Communicator& comm = world()) {
-  if (backend == "cuda") return make_cuda_engine(scene, comm);
-  return make_cpu_engine(scene, comm);
-}
+// In a float build the engine runs in a length unit near the support radius
+// (engine/unit_scaled_engine.hpp); everything it hands out is in SI.
+std::unique_ptr<Engine> make_engine(const Scene& scene, const std::string& backend, Communicator& comm = world());
 
 }  // namespace psph

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/length_unit.hpp"
 #include "core/open_boundary_zone.hpp"
 #include "fluid/fluid_options.hpp"
 #include "fluid/body_force_region.hpp"
@@ -44,6 +45,8 @@ struct Scene {
   std::vector<SceneSolidLoad> solid_loads;
   SceneOpenBoundary open_boundary;
   SolverOptions options;
+  // What its lengths, times and masses are in: SI, or an engine's unit (engine/scene_units.hpp).
+  LengthUnit unit;
 
   // Particles, components interleaved (dimension per particle).
   std::vector<double> x, v, mass;

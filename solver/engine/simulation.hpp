@@ -64,7 +64,7 @@ class BusyClock {
 template <int D, class B>
 class Simulation final : public Engine {
  public:
-  explicit Simulation(const Scene& sc, Communicator& comm = world()) : opt_(sc.options), comm_(comm) {
+  explicit Simulation(const Scene& sc, Communicator& comm = world()) : opt_(sc.options), unit_(sc.unit), comm_(comm) {
     watch_.bound = opt_.max_density_deviation;
     if (sc.dimension != D) throw std::logic_error("scene dimension mismatch");
     for (const auto& m : sc.materials) material_names_.push_back(m.name);
@@ -157,6 +157,12 @@ class Simulation final : public Engine {
     return output_slices().slice(out, f.info.components);
   }
   std::vector<std::string> field_names() const override { return available_field_names(cx_.s.fields()); }
+  std::string field_unit(const std::string& name) const override {
+    if (cx_.s.fields().has(name)) return cx_.s.fields().get(name).info.unit;
+    for (const DerivedField& f : derived_fields())
+      if (f.info.name == name) return f.info.unit;
+    throw std::invalid_argument("unknown particle field '" + name + "'");
+  }
 
   Checkpoint checkpoint() override;
   void restore(const Checkpoint& c) override;
@@ -293,9 +299,12 @@ class Simulation final : public Engine {
   void check_health();
   void watch_density(double deviation);
   std::string culprit(const BadParticle<D>& bad, int code);
-  std::string when() const { return " at t = " + std::to_string(t_) + " s, step " + std::to_string(steps_); }
+  // Messages speak SI whatever unit the engine runs in.
+  double seconds(double t) const { return unit_.to_si(t, 1); }
+  std::string when() const { return " at t = " + std::to_string(seconds(t_)) + " s, step " + std::to_string(steps_); }
 
   SolverOptions opt_;
+  LengthUnit unit_;  // the scene's (engine/scene_units.hpp)
   Communicator& comm_;
   std::unique_ptr<ParticleDomain<D, B>> domain_;  // a run shared out over processes only
   std::unique_ptr<OrderSlices> slices_;           // this process's slice of the outputs, until the next sort

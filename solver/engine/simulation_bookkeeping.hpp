@@ -189,14 +189,14 @@ double Simulation<D, B>::next_dt(double t_stop) {
     dt = lim.min();
     if (dt_first_ == 0) dt_first_ = dt;
     if (!(dt >= opt_.min_dt_ratio * dt_first_))
-      throw InstabilityError("time step collapsed to " + std::to_string(dt) + " s (" + dt_limit_ + " limit)" + when() +
-                             "; first step was " + std::to_string(dt_first_) + " s");
+      throw InstabilityError("time step collapsed to " + std::to_string(seconds(dt)) + " s (" + dt_limit_ + " limit)" +
+                             when() + "; first step was " + std::to_string(seconds(dt_first_)) + " s");
   }
   if (t_ + dt > t_stop) dt = t_stop - t_;
   if (t_ + dt >= t_stop * (1 - 1e-12)) dt = t_stop - t_;  // land exactly on output times
   if (!(t_ + dt > t_)) {
     char b[32];
-    std::snprintf(b, sizeof b, "%.3g", dt);
+    std::snprintf(b, sizeof b, "%.3g", seconds(dt));
     throw InstabilityError(std::string("the time step (") + b + " s) makes no progress" + when() +
                            ": the clock no longer advances in double precision");
   }
@@ -257,7 +257,7 @@ std::string Simulation<D, B>::culprit(const BadParticle<D>& bad, int code) {
   for (std::size_t i = 0; i < id.size(); ++i) {
     if (id[i] != wanted || !own[i]) continue;
     o << " (particle " << id[i] << ", material " << material_names_.at(mat[i]) << ", at (";
-    for (int k = 0; k < D; ++k) o << (k ? ", " : "") << x[i][k];
+    for (int k = 0; k < D; ++k) o << (k ? ", " : "") << unit_.to_si(double(x[i][k]), 1);
     o << ") m, speed " << norm(v[i]) << " m/s)";
   }
   return domain_ ? from_owner(o.str()) : o.str();

@@ -50,7 +50,12 @@ void write_raw_checkpoint_file(const std::string& path, const Checkpoint& c, con
                          {"first_dt", c.first_dt},   {"steps", c.steps},     {"dissipated_energy", c.dissipated_energy},
                          {"rigid_bodies", c.rigid_bodies}, {"fields", nlohmann::json::array()}};
   for (const auto& f : c.fields)
-    head["fields"].push_back({{"name", f.name}, {"element_bytes", f.element_bytes}, {"bytes", f.bytes.size()}});
+    head["fields"].push_back({{"name", f.name},
+                              {"element_bytes", f.element_bytes},
+                              {"bytes", f.bytes.size()},
+                              {"type", int(f.type)},
+                              {"components", f.components},
+                              {"unit", f.unit}});
   DurableFile out(path);
   out.write(std::string(kMagic) + '\n' + head.dump() + '\n');
   for (const auto& f : c.fields) out.write(f.bytes.data(), f.bytes.size());
@@ -98,6 +103,10 @@ Checkpoint read_raw_checkpoint_file(const std::string& path) {
       cf.name = f.at("name").get<std::string>();
       cf.element_bytes = f.at("element_bytes").get<std::size_t>();
       cf.bytes.resize(f.at("bytes").get<std::size_t>());
+      // Earlier files say no type, components or unit: opaque bytes.
+      cf.type = FieldType(f.value("type", int(FieldType::Byte)));
+      cf.components = f.value("components", 0);
+      cf.unit = f.value("unit", std::string());
       c.fields.push_back(std::move(cf));
     }
   } catch (const nlohmann::json::exception& e) {

@@ -139,13 +139,4 @@ struct Kernel {
   }
 };
 
-// The largest |F| (1/m^(D+2)) of a kernel of support radius R, at r -> 0: the largest factor a
-// pair pass forms, ~R^-(D+2), which leaves float's range (3.4e38) near R = 6e-8 m in 3D.
-template <int D>
-double largest_pair_factor(KernelType t, double support_radius) {
-  double m = 0;
-  for (int k = 0; k < 1000; ++k) m = std::fmax(m, std::fabs(double(Kernel<D>::df_over_q(t, Real(k / 1000.0)))));
-  return double(Kernel<D>::unit_norm(t)) * m / std::pow(support_radius, D + 2);
-}
-
 }  // namespace psph

@@ -105,9 +105,9 @@ void RigidBodies::drift(double dt) {
   }
 }
 
-std::vector<double> RigidBodies::pack() const {
+std::vector<double> pack_states(const std::vector<RigidBodyState>& states) {
   std::vector<double> out;
-  for (const RigidBodyState& s : bodies_) {
+  for (const RigidBodyState& s : states) {
     out.push_back(s.mass);
     for (const auto* a : {&s.centre, &s.velocity, &s.angular_momentum}) out.insert(out.end(), a->begin(), a->end());
     for (const auto* m : {&s.inertia0, &s.rotation}) out.insert(out.end(), m->begin(), m->end());
@@ -115,19 +115,35 @@ std::vector<double> RigidBodies::pack() const {
   return out;
 }
 
-void RigidBodies::unpack(const std::vector<double>& v) {
-  constexpr std::size_t per = 1 + 9 + 18;
-  if (v.size() != per * bodies_.size())
+std::vector<RigidBodyState> unpack_states(const std::vector<double>& v, std::size_t bodies) {
+  constexpr std::size_t per = kPackedRigidState;
+  if (v.size() != per * bodies)
     throw std::invalid_argument("the checkpoint holds " + std::to_string(v.size() / per) + " rigid bodies, the case " +
-                                std::to_string(bodies_.size()));
+                                std::to_string(bodies));
+  std::vector<RigidBodyState> out(bodies);
   std::size_t k = 0;
-  for (RigidBodyState& s : bodies_) {
+  for (RigidBodyState& s : out) {
     s.mass = v[k++];
     for (auto* a : {&s.centre, &s.velocity, &s.angular_momentum})
       for (double& x : *a) x = v[k++];
     for (auto* m : {&s.inertia0, &s.rotation})
       for (double& x : *m) x = v[k++];
   }
+  return out;
+}
+
+std::vector<double> RigidBodies::pack() const { return pack_states(bodies_); }
+void RigidBodies::unpack(const std::vector<double>& v) { bodies_ = unpack_states(v, bodies_.size()); }
+
+// Mass ~ L^D, inertia ~ M L^2, angular momentum ~ inertia / time; velocity and rotation unchanged.
+RigidBodyState in_unit(RigidBodyState s, const LengthUnit& u, bool to_si) {
+  const int D = u.dimension;
+  auto f = [&](double& v, int k) { v = to_si ? u.to_si(v, k) : u.to_engine(v, k); };
+  f(s.mass, D);
+  for (double& v : s.inertia0) f(v, D + 2);
+  for (double& v : s.centre) f(v, 1);
+  for (double& v : s.angular_momentum) f(v, D + 1);
+  return s;
 }
 
 RigidBodyState rigid_body_from_points(const std::vector<double>& m, const std::vector<Vec3d>& x, const Vec3d& v_cm,

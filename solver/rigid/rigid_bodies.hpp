@@ -15,6 +15,8 @@
 #include <array>
 #include <vector>
 
+#include "core/length_unit.hpp"
+
 namespace psph {
 
 using Vec3d = std::array<double, 3>;
@@ -57,6 +59,14 @@ class RigidBodies {
   int dimension_ = 3;
   std::vector<RigidBodyState> bodies_;
 };
+
+// States as a flat list of doubles (checkpoints) and back; throws std::invalid_argument when the
+// list holds other than `bodies` states.
+constexpr std::size_t kPackedRigidState = 1 + 9 + 18;  // doubles per body
+std::vector<double> pack_states(const std::vector<RigidBodyState>& states);
+std::vector<RigidBodyState> unpack_states(const std::vector<double>& values, std::size_t bodies);
+// A state in another length unit (core/length_unit.hpp): from SI into `u`, or back (`to_si`).
+RigidBodyState in_unit(RigidBodyState s, const LengthUnit& u, bool to_si);
 
 // The bodies of a scene at t = 0 (engine/rigid_scene.hpp builds them from the particles).
 struct SceneRigidBodies {

@@ -93,12 +93,12 @@ class RigidStage {
     for (int b = 0; b < bodies_.count(); ++b) {
       const RigidBodyState& st = bodies_.body(b);
       const std::string p = "body" + std::to_string(b) + "_";
-      for (int k = 0; k < D; ++k) out.push_back({p + axis[k], st.centre[k]});
-      for (int k = 0; k < D; ++k) out.push_back({p + "v" + axis[k], st.velocity[k]});
+      for (int k = 0; k < D; ++k) out.push_back({p + axis[k], st.centre[k], "m"});
+      for (int k = 0; k < D; ++k) out.push_back({p + "v" + axis[k], st.velocity[k], "m/s"});
       const Vec3d w = angular_velocity_of(st, D);
-      if (D == 2) out.push_back({p + "omega", w[2]});
+      if (D == 2) out.push_back({p + "omega", w[2], "rad/s"});
       if (D == 3)
-        for (int k = 0; k < 3; ++k) out.push_back({p + "omega_" + axis[k], w[k]});
+        for (int k = 0; k < 3; ++k) out.push_back({p + "omega_" + axis[k], w[k], "rad/s"});
     }
   }
 

@@ -113,28 +113,6 @@ void check_step_count(const CaseDraft& d) {
                             (o.fixed_dt > 0 ? ", solver.dt" : " from solver.dt_factor and the stability limits") + ")");
 }
 
-// Float pair loops (a mixed- or single-precision build) form the kernel's F ~ R^-(D+2) and products
-// with it: past 1e36 (float ends at 3.4e38) the claystone cell at R = 4e-8 m overflowed within 170
-// steps (VALIDATION.md "Mixed precision"). Such a case needs the double build.
-void check_float_range(const CaseDraft& d) {
-  if (sizeof(Real) == 8) return;
-  const SolverOptions& o = d.c.scene.options;
-  const int D = d.dimension();
-  auto largest = [&](double R) {
-    return D == 1 ? largest_pair_factor<1>(o.kernel, R) : D == 2 ? largest_pair_factor<2>(o.kernel, R)
-                                                                 : largest_pair_factor<3>(o.kernel, R);
-  };
-  constexpr double kLimit = 1e36;
-  const double f = largest(o.support_radius);
-  if (!(f > kLimit)) return;
-  const double smallest = o.support_radius * std::pow(f / kLimit, 1.0 / (D + 2));
-  fail(d, "discretisation.support_radius",
-       "expected at least " + CaseReader::fmt(smallest) + " m in this " + precision_name() +
-           "-precision build (its float pair loops would form kernel derivatives of " + CaseReader::fmt(f) +
-           " 1/m^" + std::to_string(D + 2) + ", past float's range); got " + CaseReader::fmt(o.support_radius) +
-           " m: run this case with a double build (the default preset)");
-}
-
 }  // namespace
 
 // Keys without effect first: they explain a combination's error better than the combination.
@@ -144,7 +122,6 @@ void cross_check(const CaseDraft& d) {
   check_solids(d);
   check_fixed_step(d);
   check_step_count(d);
-  check_float_range(d);
 }
 
 void check_output_fields(const Case& c, const std::vector<std::string>& available) {

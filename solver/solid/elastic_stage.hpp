@@ -151,8 +151,8 @@ class ElasticStage {
   void monitors(StepContext<D, B>& cx, std::vector<MonitorValue>& out, ParticleModuli moduli) const {
     const StageScope scope("solid");
     if (!active_) return;
-    out.push_back({"elastic_energy", elastic_energy(cx, moduli)});
-    if (o_.solid_damping_rate > 0) out.push_back({"dissipated_energy", dissipated_});
+    out.push_back({"elastic_energy", elastic_energy(cx, moduli), "J"});
+    if (o_.solid_damping_rate > 0) out.push_back({"dissipated_energy", dissipated_, "J"});
   }
 
   // The displacement form needs no strain or stress in its step (unless a later stage does): computed

@@ -7,6 +7,7 @@ namespace psph {
 struct MonitorValue {
   std::string name;
   double value = 0;
+  std::string unit = "-";  // SI (core/length_unit.hpp's table)
 };
 
 }  // namespace psph

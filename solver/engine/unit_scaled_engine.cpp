@@ -1,0 +1,105 @@
+#include "engine/unit_scaled_engine.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+#include "engine/scene_units.hpp"
+
+namespace psph {
+
+namespace {
+
+// Each value of a field's bytes (floats or doubles) times L^(power) or L^-(power).
+void scale_bytes(CheckpointField& f, const LengthUnit& u, int power, bool to_si) {
+  const std::size_t width = f.element_bytes / std::size_t(f.components);
+  auto scale = [&](auto v) { return decltype(v)(to_si ? u.to_si(double(v), power) : u.to_engine(double(v), power)); };
+  for (std::size_t at = 0; at + width <= f.bytes.size(); at += width) {
+    if (width == 8) {
+      double v;
+      std::memcpy(&v, f.bytes.data() + at, 8), v = scale(v), std::memcpy(f.bytes.data() + at, &v, 8);
+    } else if (width == 4) {
+      float v;
+      std::memcpy(&v, f.bytes.data() + at, 4), v = scale(v), std::memcpy(f.bytes.data() + at, &v, 4);
+    } else {
+      throw std::logic_error("checkpoint field '" + f.name + "': components of " + std::to_string(width) + " bytes");
+    }
+  }
+}
+
+}  // namespace
+
+UnitScaledEngine::UnitScaledEngine(const Scene& si, const LengthUnit& unit,
+                                   const std::function<std::unique_ptr<Engine>(const Scene&)>& make)
+    : u_(unit), inner_(make(in_units(si, unit))) {
+  for (const std::string& name : inner_->field_names()) length_power(inner_->field_unit(name), u_.dimension);
+}
+
+StepStats UnitScaledEngine::stats() {
+  StepStats s = inner_->stats();
+  const int D = u_.dimension;
+  s.a_max = u_.to_si(s.a_max, -1);
+  s.kinetic_energy = u_.to_si(s.kinetic_energy, D);
+  s.elastic_energy = u_.to_si(s.elastic_energy, D);
+  s.dissipated_energy = u_.to_si(s.dissipated_energy, D);
+  return s;
+}
+
+const DensityWatch& UnitScaledEngine::density_watch() const {
+  watch_ = inner_->density_watch();
+  watch_.peak_time = u_.to_si(watch_.peak_time, 1);
+  if (watch_.exceeded()) watch_.first.time = u_.to_si(watch_.first.time, 1);
+  return watch_;
+}
+
+std::vector<double> UnitScaledEngine::to_si(std::vector<double> values, const std::string& field) const {
+  const int k = length_power(inner_->field_unit(field), u_.dimension);
+  if (k != 0)
+    for (double& v : values) v = u_.to_si(v, k);
+  return values;
+}
+
+std::vector<MonitorValue> UnitScaledEngine::monitors() {
+  std::vector<MonitorValue> out = inner_->monitors();
+  for (MonitorValue& m : out) m.value = u_.to_si(m.value, length_power(m.unit, u_.dimension));
+  return out;
+}
+
+std::vector<RigidBodyState> UnitScaledEngine::rigid_bodies() const {
+  std::vector<RigidBodyState> out = inner_->rigid_bodies();
+  for (RigidBodyState& b : out) b = in_unit(b, u_, true);
+  return out;
+}
+
+// Real fields by their units' powers; the other fields hold no dimension (ids, flags, materials).
+Checkpoint UnitScaledEngine::converted(Checkpoint c, bool to_si) const {
+  const int D = u_.dimension;
+  auto f = [&](double& v, int k) { v = to_si ? u_.to_si(v, k) : u_.to_engine(v, k); };
+  f(c.time, 1), f(c.last_dt, 1), f(c.first_dt, 1), f(c.dissipated_energy, D);
+  if (c.rigid_bodies.size() % kPackedRigidState == 0) {  // else the restore refuses it
+    std::vector<RigidBodyState> bodies = unpack_states(c.rigid_bodies, c.rigid_bodies.size() / kPackedRigidState);
+    for (RigidBodyState& b : bodies) b = in_unit(b, u_, to_si);
+    c.rigid_bodies = pack_states(bodies);
+  }
+  const std::vector<std::string> known = inner_->field_names();
+  for (CheckpointField& cf : c.fields) {
+    const bool registered = std::find(known.begin(), known.end(), cf.name) != known.end();
+    const int k = length_power(cf.unit.empty() && registered ? inner_->field_unit(cf.name) : cf.unit, D);
+    if (k == 0) continue;
+    if (cf.type != FieldType::Real || cf.components <= 0)
+      throw std::invalid_argument("the checkpoint's field '" + cf.name + "' does not say its components (a raw-format "
+                                  "checkpoint of an earlier poresph): this " + std::string(precision_name()) +
+                                  "-precision build cannot convert it to its units; restart it with a double build");
+    scale_bytes(cf, u_, k, to_si);
+  }
+  return c;
+}
+
+std::unique_ptr<Engine> make_engine(const Scene& scene, const std::string& backend, Communicator& comm) {
+  auto make = [&](const Scene& sc) { return backend == "cuda" ? make_cuda_engine(sc, comm) : make_cpu_engine(sc, comm); };
+  const LengthUnit unit = engine_length_unit(scene.options.support_radius, scene.dimension);
+  if (unit.si()) return make(scene);
+  return std::make_unique<UnitScaledEngine>(scene, unit, make);
+}
+
+}  // namespace psph
