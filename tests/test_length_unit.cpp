@@ -149,9 +149,10 @@ TEST(LengthUnit, EveryCaseRunsTheSameInAnyUnit) {
   run_both(cases().front(), 17);  // far from the support: lengths of 2^-17 units
 }
 
-// The raw checkpoint format says each field's unit: a scaled engine restores it; an earlier raw
-// file, which said none, is refused, named (its positions cannot be told from its ids).
-TEST(LengthUnit, RawCheckpointsSayTheirUnits) {
+// The raw checkpoint format says each field's unit: a scaled engine restores it. An earlier raw
+// file said neither components nor units: a scaled engine takes them from its registry. A unit
+// that is not the field's is refused, named.
+TEST(LengthUnit, RawCheckpointsRestoreInAnyUnit) {
   const UnitCase uc{"sessile_drop_2d.toml", {}, 5};
   const Scene sc = scene_of(uc);
   auto si = make_cpu_engine(sc);
@@ -159,17 +160,22 @@ TEST(LengthUnit, RawCheckpointsSayTheirUnits) {
   const std::string file = (std::filesystem::temp_directory_path() /
                             ("psph_unit_raw_" + std::to_string(::getpid()) + ".ckpt")).string();
   write_raw_checkpoint_file(file, si->checkpoint(), "sessile");
-  auto scaled = in_unit(sc, -10);
-  scaled->restore(read_checkpoint_file(file));
-  si->step(1e30), scaled->step(1e30);
-  if (sizeof(Real) == 8) expect_same(*si, *scaled, "restored from the raw format");
-  Checkpoint earlier = read_checkpoint_file(file);
-  for (CheckpointField& f : earlier.fields) f.components = 0, f.type = FieldType::Byte, f.unit.clear();
+  const Checkpoint fresh = read_checkpoint_file(file);
   std::filesystem::remove(file);
+  Checkpoint earlier = fresh, wrong = fresh;
+  for (CheckpointField& f : earlier.fields) f.components = 0, f.type = FieldType::Byte, f.unit.clear();
+  auto scaled = in_unit(sc, -10), from_earlier = in_unit(sc, -10);
+  scaled->restore(fresh);
+  from_earlier->restore(earlier);
+  si->step(1e30), scaled->step(1e30), from_earlier->step(1e30);
+  if (sizeof(Real) == 8) expect_same(*si, *scaled, "restored from the raw format");
+  if (sizeof(Real) == 8) expect_same(*si, *from_earlier, "restored from an earlier raw file");
+  wrong.fields[0].unit = "furlong";
   try {
-    in_unit(sc, -10)->restore(earlier);
-    ADD_FAILURE() << "an earlier raw checkpoint was restored in another unit";
+    in_unit(sc, -10)->restore(wrong);
+    ADD_FAILURE() << "a field in furlongs was restored";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("field 'position' does not say its components"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("field '" + wrong.fields[0].name + "' has the unit 'furlong'"), std::string::npos)
+        << e.what();
   }
 }

@@ -391,13 +391,13 @@ void RunDriver::monitor() {
   if (!c_.probes.empty()) {
     const std::vector<std::string> names = probe_columns(c_.probes);
     const std::vector<double> values = sample_probes(*engine_, c_.scene, c_.probes);
-    for (std::size_t k = 0; k < names.size(); ++k) row.push_back({names[k], values[k]});
+    for (std::size_t k = 0; k < names.size(); ++k) row.push_back({names[k], values[k], "Pa"});
   }
   if (!two_phase_) return rd_->monitor(*engine_, row);
   const bool before = two_phase_->percolation_time() >= 0;
   const std::vector<std::string> names = two_phase_->columns();
   const std::vector<double> values = two_phase_->sample(*engine_);
-  for (std::size_t k = 0; k < names.size(); ++k) row.push_back({names[k], values[k]});
+  for (std::size_t k = 0; k < names.size(); ++k) row.push_back({names[k], values[k], "SI"});  // measured in SI
   rd_->monitor(*engine_, row);
   if (before || two_phase_->percolation_time() < 0) return;
   log("gas percolates (joins the inlet and outlet of the monitor region) at t = " +

@@ -4,7 +4,7 @@
 // (3e38 1/m^5 at the claystone cell's R = 4e-8 m, float ends at 3.4e38), in units of L it is of
 // order one. Time is scaled by the same L (seconds) and mass by L^D (a particle's mass per unit
 // depth^(3-D)), so that densities, velocities, pressures, stresses, moduli and strains keep their SI
-// numbers. A power of two makes every conversion exact.
+// numbers. A power of two makes every conversion exact while the values stay normal numbers.
 #include <cmath>
 #include <stdexcept>
 #include <string>

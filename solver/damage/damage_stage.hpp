@@ -97,9 +97,9 @@ class DamageStage {
   void monitors(StepContext<D, B>& cx, std::vector<MonitorValue>& out) const {
     const StageScope scope("damage");
     if (!active_) return;
-    if (cx.s.ghost.size()) out.push_back({"ghost_particles", double(cx.template sum_of<Real>(GhostOf<D>{cx.view()}))});
-    out.push_back({"damaged_particles", double(cx.template sum_of<Real>(DamagedOf{damage_.data()}))});
-    out.push_back({"total_damage", double(cx.template sum_of<Real>(DamageOf{damage_.data()}))});
+    if (cx.s.ghost.size()) out.push_back({"ghost_particles", double(cx.template sum_of<Real>(GhostOf<D>{cx.view()})), "-"});
+    out.push_back({"damaged_particles", double(cx.template sum_of<Real>(DamagedOf{damage_.data()})), "-"});
+    out.push_back({"total_damage", double(cx.template sum_of<Real>(DamageOf{damage_.data()})), "-"});
     if (!law_.rankine)
       out.push_back({"damage_energy", double(cx.template sum_of<Real>(DamageEnergyOf<D>{cx.view(), law_, damage_.data()})), "J"});
   }

@@ -56,8 +56,8 @@ class Engine {
   // process's order, the slices in process order (every process calls); one process: field(name).
   virtual std::vector<double> field_slice(const std::string& name) { return field(name); }
   virtual std::vector<std::string> field_names() const = 0;
-  // The SI unit of a field of field_names() (the registry's, state/fields.hpp).
-  virtual std::string field_unit(const std::string& name) const = 0;
+  // What a field of field_names() is: its type, components and SI unit (the registry's, state/fields.hpp).
+  virtual FieldInfo field_info(const std::string& name) const = 0;
   virtual std::string backend() const = 0;
   virtual std::string device() const = 0;
   // Mean number of neighbours (r < support) per fluid or elastic particle.
@@ -83,13 +83,15 @@ class Engine {
 };
 
 // Over the processes of `comm` (parallel/communicator.hpp): by default those that mpirun
-// started, or this one alone.
+// started, or this one alone. In a float build the engine runs in a length unit near the support
+// radius (engine/unit_scaled_engine.hpp); everything it hands out is in SI.
 std::unique_ptr<Engine> make_cpu_engine(const Scene& scene, Communicator& comm = world());
 std::unique_ptr<Engine> make_cuda_engine(const Scene& scene, Communicator& comm = world());  // throws without CUDA
 bool cuda_available();  // built with CUDA and a device present
 
-// In a float build the engine runs in a length unit near the support radius
-// (engine/unit_scaled_engine.hpp); everything it hands out is in SI.
-std::unique_ptr<Engine> make_engine(const Scene& scene, const std::string& backend, Communicator& comm = world());
+inline std::unique_ptr<Engine> make_engine(const Scene& scene, const std::string& backend, Communicator& comm = world()) {
+  if (backend == "cuda") return make_cuda_engine(scene, comm);
+  return make_cpu_engine(scene, comm);
+}
 
 }  // namespace psph

@@ -1,6 +1,7 @@
 // The CUDA instantiation of the one-source simulation.
 #include "backend/cuda_backend.cuh"
 #include "engine/simulation.hpp"
+#include "engine/unit_scaled_engine.hpp"
 
 namespace psph {
 
@@ -15,7 +16,7 @@ std::unique_ptr<Engine> make_cuda_engine(const Scene& scene, Communicator& comm)
   if (cudaGetDeviceCount(&devices) != cudaSuccess || devices == 0)
     throw std::runtime_error("--backend cuda: no CUDA device is visible on this machine");
   if (comm.parallel()) PSPH_CUDA(cudaSetDevice(local_rank() % devices));
-  return make_simulation<CudaBackend>(scene, comm);
+  return in_engine_unit(scene, [&](const Scene& s) { return make_simulation<CudaBackend>(s, comm); });
 }
 
 }  // namespace psph

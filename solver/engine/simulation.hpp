@@ -157,10 +157,10 @@ class Simulation final : public Engine {
     return output_slices().slice(out, f.info.components);
   }
   std::vector<std::string> field_names() const override { return available_field_names(cx_.s.fields()); }
-  std::string field_unit(const std::string& name) const override {
-    if (cx_.s.fields().has(name)) return cx_.s.fields().get(name).info.unit;
+  FieldInfo field_info(const std::string& name) const override {
+    if (cx_.s.fields().has(name)) return cx_.s.fields().get(name).info;
     for (const DerivedField& f : derived_fields())
-      if (f.info.name == name) return f.info.unit;
+      if (f.info.name == name) return f.info;
     throw std::invalid_argument("unknown particle field '" + name + "'");
   }
 

@@ -32,7 +32,7 @@ void scale_bytes(CheckpointField& f, const LengthUnit& u, int power, bool to_si)
 UnitScaledEngine::UnitScaledEngine(const Scene& si, const LengthUnit& unit,
                                    const std::function<std::unique_ptr<Engine>(const Scene&)>& make)
     : u_(unit), inner_(make(in_units(si, unit))) {
-  for (const std::string& name : inner_->field_names()) length_power(inner_->field_unit(name), u_.dimension);
+  for (const std::string& name : inner_->field_names()) length_power(inner_->field_info(name).unit, u_.dimension);
 }
 
 StepStats UnitScaledEngine::stats() {
@@ -53,7 +53,7 @@ const DensityWatch& UnitScaledEngine::density_watch() const {
 }
 
 std::vector<double> UnitScaledEngine::to_si(std::vector<double> values, const std::string& field) const {
-  const int k = length_power(inner_->field_unit(field), u_.dimension);
+  const int k = length_power(inner_->field_info(field).unit, u_.dimension);
   if (k != 0)
     for (double& v : values) v = u_.to_si(v, k);
   return values;
@@ -72,6 +72,8 @@ std::vector<RigidBodyState> UnitScaledEngine::rigid_bodies() const {
 }
 
 // Real fields by their units' powers; the other fields hold no dimension (ids, flags, materials).
+// A field the case does not register is left as it is (the restore ignores it); one of an earlier
+// raw file, which says neither its components nor its unit, takes them from the registry.
 Checkpoint UnitScaledEngine::converted(Checkpoint c, bool to_si) const {
   const int D = u_.dimension;
   auto f = [&](double& v, int k) { v = to_si ? u_.to_si(v, k) : u_.to_engine(v, k); };
@@ -83,22 +85,29 @@ Checkpoint UnitScaledEngine::converted(Checkpoint c, bool to_si) const {
   }
   const std::vector<std::string> known = inner_->field_names();
   for (CheckpointField& cf : c.fields) {
-    const bool registered = std::find(known.begin(), known.end(), cf.name) != known.end();
-    const int k = length_power(cf.unit.empty() && registered ? inner_->field_unit(cf.name) : cf.unit, D);
+    if (std::find(known.begin(), known.end(), cf.name) == known.end()) continue;
+    const FieldInfo info = inner_->field_info(cf.name);
+    if (cf.components <= 0 && cf.unit.empty()) cf.type = info.type, cf.components = info.components, cf.unit = info.unit;
+    int k = 0;
+    try {
+      k = length_power(cf.unit, D);
+    } catch (const std::logic_error&) {
+      throw std::invalid_argument("the checkpoint's field '" + cf.name + "' has the unit '" + cf.unit + "', expected '" +
+                                  info.unit + "'");
+    }
     if (k == 0) continue;
-    if (cf.type != FieldType::Real || cf.components <= 0)
-      throw std::invalid_argument("the checkpoint's field '" + cf.name + "' does not say its components (a raw-format "
-                                  "checkpoint of an earlier poresph): this " + std::string(precision_name()) +
-                                  "-precision build cannot convert it to its units; restart it with a double build");
+    if (cf.type != FieldType::Real || cf.components <= 0 || cf.element_bytes % std::size_t(cf.components) != 0)
+      throw std::invalid_argument("the checkpoint's field '" + cf.name + "' (" + std::to_string(cf.element_bytes) +
+                                  " bytes a particle) is not the " + std::to_string(info.components) +
+                                  " real components of its unit " + info.unit);
     scale_bytes(cf, u_, k, to_si);
   }
   return c;
 }
 
-std::unique_ptr<Engine> make_engine(const Scene& scene, const std::string& backend, Communicator& comm) {
-  auto make = [&](const Scene& sc) { return backend == "cuda" ? make_cuda_engine(sc, comm) : make_cpu_engine(sc, comm); };
+std::unique_ptr<Engine> in_engine_unit(const Scene& scene, const std::function<std::unique_ptr<Engine>(const Scene&)>& make) {
   const LengthUnit unit = engine_length_unit(scene.options.support_radius, scene.dimension);
-  if (unit.si()) return make(scene);
+  if (unit.si() || !scene.unit.si()) return make(scene);
   return std::make_unique<UnitScaledEngine>(scene, unit, make);
 }
 

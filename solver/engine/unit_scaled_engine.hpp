@@ -27,7 +27,7 @@ class UnitScaledEngine final : public Engine {
   std::vector<double> field(const std::string& name) override { return to_si(inner_->field(name), name); }
   std::vector<double> field_slice(const std::string& name) override { return to_si(inner_->field_slice(name), name); }
   std::vector<std::string> field_names() const override { return inner_->field_names(); }
-  std::string field_unit(const std::string& name) const override { return inner_->field_unit(name); }
+  FieldInfo field_info(const std::string& name) const override { return inner_->field_info(name); }
   std::string backend() const override { return inner_->backend(); }
   std::string device() const override { return inner_->device(); }
   double mean_neighbours() override { return inner_->mean_neighbours(); }
@@ -48,5 +48,9 @@ class UnitScaledEngine final : public Engine {
   std::unique_ptr<Engine> inner_;
   mutable DensityWatch watch_;
 };
+
+// The engine `make` builds from `scene`, in the length unit of this build (engine_length_unit):
+// wrapped in a UnitScaledEngine where that is not SI; as it is for a scene already in an engine's unit.
+std::unique_ptr<Engine> in_engine_unit(const Scene& scene, const std::function<std::unique_ptr<Engine>(const Scene&)>& make);
 
 }  // namespace psph

@@ -104,7 +104,10 @@ Checkpoint read_raw_checkpoint_file(const std::string& path) {
       cf.element_bytes = f.at("element_bytes").get<std::size_t>();
       cf.bytes.resize(f.at("bytes").get<std::size_t>());
       // Earlier files say no type, components or unit: opaque bytes.
-      cf.type = FieldType(f.value("type", int(FieldType::Byte)));
+      const int type = f.value("type", int(FieldType::Byte));
+      if (type < int(FieldType::Real) || type > int(FieldType::Byte))
+        throw CheckpointError(path + ": field '" + cf.name + "' has the type " + std::to_string(type) + ", expected 0 to 2");
+      cf.type = FieldType(type);
       cf.components = f.value("components", 0);
       cf.unit = f.value("unit", std::string());
       c.fields.push_back(std::move(cf));

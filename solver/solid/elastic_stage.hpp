@@ -189,8 +189,8 @@ class ElasticStage {
     const int most = cx.template max_of<int>(ListCount<D>{reference_count_.data()});
     if (most > reference_width_)
       throw std::runtime_error("a solid particle has " + std::to_string(most) + " solid neighbours within the support at "
-                               "t = 0, more than the " + std::to_string(reference_width_) + " its lattice spacing (" +
-                               std::to_string(cx.spacing) + " m) allows: are solid particles closer than the spacing?");
+                               "t = 0, more than the " + std::to_string(reference_width_) + " its lattice spacing "
+                               "(discretisation.spacing) allows: are solid particles closer than the spacing?");
     recorded_ = true;
   }
   // Calls f with the solid's neighbours in the reference configuration: the fixed lists of t = 0
