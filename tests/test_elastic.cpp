@@ -30,15 +30,15 @@ template <int D, class U>
 Vec<D> navier_at_centre(const U& u, Real k, Real mu) {
   const int n = 13;
   const Real dx = Real(0.1), support = 4 * dx;
-  std::vector<Vec<D>> pts;
+  std::vector<Point<D>> pts;
   int total = 1;
   for (int d = 0; d < D; ++d) total *= n;
   for (int s = 0; s < total; ++s) {
-    Vec<D> p;
-    for (int d = 0, r = s; d < D; ++d, r /= n) p[d] = (r % n - n / 2) * dx;
+    Point<D> p;
+    for (int d = 0, r = s; d < D; ++d, r /= n) p[d] = Coord((r % n - n / 2) * dx);
     pts.push_back(p);
   }
-  Real lo[D], hi[D];
+  Coord lo[D], hi[D];
   bool per[D];
   for (int d = 0; d < D; ++d) lo[d] = -(n / 2 + 1) * dx, hi[d] = (n / 2 + 1) * dx, per[d] = false;
   HostNeighbours<D> nb(pts, lo, hi, per, support);
@@ -49,7 +49,7 @@ Vec<D> navier_at_centre(const U& u, Real k, Real mu) {
   const Real V = std::pow(dx, D);
   Vec<D> f = Vec<D>::zero();
   nb.view().for_each(centre, [&](int j, const Vec<D>& rij, Real r) {
-    f += navier_pair<D>(u(nb.x[centre]) - u(nb.x[j]), rij * (Real(1) / r), k, mu) * (V * kern.F(r));
+    f += navier_pair<D>(u(to_real(nb.x[centre])) - u(to_real(nb.x[j])), rij * (Real(1) / r), k, mu) * (V * kern.F(r));
   });
   return f;
 }

@@ -101,23 +101,23 @@ template <int D>
 void check_linear_gradient(unsigned seed) {
   const int n1 = D == 1 ? 12 : D == 2 ? 10 : 7;
   const double dx = 0.1;
-  std::vector<Vec<D>> pts;
+  std::vector<Point<D>> pts;
   std::srand(seed);
   int total = 1;
   for (int k = 0; k < D; ++k) total *= n1;
   for (int s = 0; s < total; ++s) {
-    Vec<D> p;
+    Point<D> p;
     int r = s;
     for (int k = 0; k < D; ++k) {
       const double jitter = 0.2 * dx * (std::rand() / double(RAND_MAX) - 0.5);
-      p[k] = Real((r % n1 + 0.5) * dx + jitter);
+      p[k] = Coord(Real((r % n1 + 0.5) * dx + jitter));
       r /= n1;
     }
     pts.push_back(p);
   }
-  Real lo[D], hi[D];
+  Coord lo[D], hi[D];
   bool per[D];
-  for (int k = 0; k < D; ++k) lo[k] = 0, hi[k] = Real(n1 * dx), per[k] = false;
+  for (int k = 0; k < D; ++k) lo[k] = 0, hi[k] = Coord(Real(n1 * dx)), per[k] = false;
   const Real R = Real(2.6 * dx);
   HostNeighbours<D> nb(pts, lo, hi, per, R);
   const Kernel<D> kern = Kernel<D>::make(KernelType::WendlandC2, R);
@@ -155,10 +155,10 @@ TEST(Corrections, LinearGradientExact2D) { check_linear_gradient<2>(2); }
 TEST(Corrections, LinearGradientExact3D) { check_linear_gradient<3>(3); }
 
 TEST(Corrections, ShepardKernelIsAPartitionOfUnity) {
-  std::vector<Vec<2>> pts;
+  std::vector<Point<2>> pts;
   for (int i = 0; i < 8; ++i)
-    for (int j = 0; j < 8; ++j) pts.push_back(Vec<2>{{Real(0.05 + 0.1 * i), Real(0.05 + 0.1 * j)}});
-  const Real lo[2] = {0, 0}, hi[2] = {Real(0.8), Real(0.8)};
+    for (int j = 0; j < 8; ++j) pts.push_back(Point<2>{{Coord(Real(0.05 + 0.1 * i)), Coord(Real(0.05 + 0.1 * j))}});
+  const Coord lo[2] = {0, 0}, hi[2] = {Coord(Real(0.8)), Coord(Real(0.8))};
   const bool per[2] = {false, false};
   HostNeighbours<2> nb(pts, lo, hi, per, Real(0.25));
   const Kernel<2> kern = Kernel<2>::make(KernelType::CubicSpline, Real(0.25));

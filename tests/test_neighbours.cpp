@@ -19,14 +19,14 @@ void compare_with_brute_force(Cloud cloud, bool periodic, unsigned seed) {
   std::normal_distribution<double> g(0, 0.04);
   const int n = D == 1 ? 300 : D == 2 ? 1500 : 3000;
   const Real L[3] = {1.0, 0.8, 0.6};
-  std::vector<Vec<D>> pts(n);
+  std::vector<Point<D>> pts(n);
   for (int i = 0; i < n; ++i)
     for (int k = 0; k < D; ++k) {
       double x = cloud == Cloud::Random ? u(rng) * L[k] : (i % 3) * 0.3 * L[k] + 0.1 * L[k] + g(rng);
       x = std::clamp(x, 0.0, double(L[k]) * (1 - 1e-9));
-      pts[i][k] = Real(x);
+      pts[i][k] = Coord(x);
     }
-  Real lo[D], hi[D];
+  Coord lo[D], hi[D];
   bool per[D];
   for (int k = 0; k < D; ++k) lo[k] = 0, hi[k] = L[k], per[k] = periodic && (k % 2 == 0 || D == 1);
   const Real R = Real(0.09);
@@ -88,7 +88,7 @@ TEST(Neighbours, SortBreaksTiesById) {
 
 TEST(Neighbours, ShortPeriodicAxisIsRejected) {
   CellGrid<2> g;
-  const Real lo[2] = {0, 0}, hi[2] = {1, Real(0.25)};
+  const Coord lo[2] = {0, 0}, hi[2] = {1, Coord(Real(0.25))};
   const bool per[2] = {true, true};
   EXPECT_FALSE(CellGrid<2>::make(lo, hi, per, Real(0.1), g));
 }
@@ -99,9 +99,9 @@ TEST(Neighbours, RetiredGhostsAreInNoList) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(0, 1);
   const int n = 800, capacity = 256;
-  std::vector<Vec<2>> pts(n);
-  for (auto& p : pts) p[0] = Real(u(rng)), p[1] = Real(u(rng));
-  const Real lo[2] = {0, 0}, hi[2] = {1, 1};
+  std::vector<Point<2>> pts(n);
+  for (auto& p : pts) p[0] = Coord(Real(u(rng))), p[1] = Coord(Real(u(rng)));
+  const Coord lo[2] = {0, 0}, hi[2] = {1, 1};
   const bool per[2] = {false, false};
   HostNeighbours<2> nb(pts, lo, hi, per, Real(0.08));
   MaterialTable<2> mats;
@@ -136,14 +136,14 @@ TEST(Neighbours, RetiredGhostsAreInNoList) {
 TEST(Neighbours, StencilSkipsCellsOutOfReach) {
   std::mt19937 rng(12);
   std::uniform_real_distribution<double> u(0, 1);
-  const Real lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+  const Coord lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
   const bool per[3] = {true, true, true};
-  const HostNeighbours<3> nb(std::vector<Vec<3>>{}, lo, hi, per, Real(0.1));
+  const HostNeighbours<3> nb(std::vector<Point<3>>{}, lo, hi, per, Real(0.1));
   const NeighbourView<3> view = nb.view();
   const int points = 20000;
   long visited = 0;
   for (int i = 0; i < points; ++i) {
-    const Vec<3> p{Real(u(rng)), Real(u(rng)), Real(u(rng))};
+    const Point<3> p{Coord(u(rng)), Coord(u(rng)), Coord(u(rng))};
     view.for_each_cell_in_reach(p, [&](int) { ++visited; });
   }
   EXPECT_NEAR(double(visited) / points, 7 + 3.14159265 * (3.0 + 4.0 / 3.0), 0.15);
