@@ -112,15 +112,11 @@ class ExactSum {
   int special_ = 0;
 };
 
-// What a reduction's value type is made of: a floating-point scalar itself; a vector its
-// components' type (Vec: Real, Point: Coord); a struct its `component_type` where it names one
+// What a reduction's value type is made of: its scalar (core/vec.hpp: a floating-point type
+// itself, a vector's or matrix's components); a struct its `component_type` where it names one
 // (RigidLoadSum: double), otherwise Real (BandSums).
 template <class T, class = void>
-struct ComponentOf { using type = Real; };
-template <class T>
-struct ComponentOf<T, std::enable_if_t<std::is_floating_point_v<T>>> { using type = T; };
-template <class T, int D>
-struct ComponentOf<VecT<T, D>, void> { using type = T; };
+struct ComponentOf { using type = std::conditional_t<std::is_floating_point_v<ScalarOf<T>>, ScalarOf<T>, Real>; };
 template <class T>
 struct ComponentOf<T, std::void_t<typename T::component_type>> { using type = typename T::component_type; };
 

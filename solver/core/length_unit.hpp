@@ -22,6 +22,8 @@ struct LengthUnit {
   // A quantity of length power k (an SI value is its engine value times L^k).
   double to_engine(double si, int k) const { return std::ldexp(si, -k * exponent); }
   double to_si(double engine, int k) const { return std::ldexp(engine, k * exponent); }
+  // Either way: into SI (`into_si`) or into this unit.
+  double convert(double v, int k, bool into_si) const { return into_si ? to_si(v, k) : to_engine(v, k); }
 };
 
 // The length power of a unit as the field registry and the monitors write it; throws

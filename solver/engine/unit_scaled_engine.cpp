@@ -1,7 +1,6 @@
 #include "engine/unit_scaled_engine.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <stdexcept>
 
 #include "engine/scene_units.hpp"
@@ -10,21 +9,14 @@ namespace psph {
 
 namespace {
 
-// Each value of a field's bytes (floats or doubles) times L^(power) or L^-(power).
-void scale_bytes(CheckpointField& f, const LengthUnit& u, int power, bool to_si) {
+// Each value of a real field (floats or doubles, kept so) times L^power or L^-power.
+void scale_values(CheckpointField& f, const LengthUnit& u, int power, bool to_si) {
   const std::size_t width = f.element_bytes / std::size_t(f.components);
-  auto scale = [&](auto v) { return decltype(v)(to_si ? u.to_si(double(v), power) : u.to_engine(double(v), power)); };
-  for (std::size_t at = 0; at + width <= f.bytes.size(); at += width) {
-    if (width == 8) {
-      double v;
-      std::memcpy(&v, f.bytes.data() + at, 8), v = scale(v), std::memcpy(f.bytes.data() + at, &v, 8);
-    } else if (width == 4) {
-      float v;
-      std::memcpy(&v, f.bytes.data() + at, 4), v = scale(v), std::memcpy(f.bytes.data() + at, &v, 4);
-    } else {
-      throw std::logic_error("checkpoint field '" + f.name + "': components of " + std::to_string(width) + " bytes");
-    }
-  }
+  if (width != 4 && width != 8)
+    throw std::logic_error("checkpoint field '" + f.name + "': components of " + std::to_string(width) + " bytes");
+  std::vector<double> v = real_values(f);
+  for (double& x : v) x = u.convert(x, power, to_si);
+  set_real_values(f, v, width);
 }
 
 }  // namespace
@@ -76,7 +68,7 @@ std::vector<RigidBodyState> UnitScaledEngine::rigid_bodies() const {
 // raw file, which says neither its components nor its unit, takes them from the registry.
 Checkpoint UnitScaledEngine::converted(Checkpoint c, bool to_si) const {
   const int D = u_.dimension;
-  auto f = [&](double& v, int k) { v = to_si ? u_.to_si(v, k) : u_.to_engine(v, k); };
+  auto f = [&](double& v, int k) { v = u_.convert(v, k, to_si); };
   f(c.time, 1), f(c.last_dt, 1), f(c.first_dt, 1), f(c.dissipated_energy, D);
   if (c.rigid_bodies.size() % kPackedRigidState == 0) {  // else the restore refuses it
     std::vector<RigidBodyState> bodies = unpack_states(c.rigid_bodies, c.rigid_bodies.size() / kPackedRigidState);
@@ -100,7 +92,7 @@ Checkpoint UnitScaledEngine::converted(Checkpoint c, bool to_si) const {
       throw std::invalid_argument("the checkpoint's field '" + cf.name + "' (" + std::to_string(cf.element_bytes) +
                                   " bytes a particle) is not the " + std::to_string(info.components) +
                                   " real components of its unit " + info.unit);
-    scale_bytes(cf, u_, k, to_si);
+    scale_values(cf, u_, k, to_si);
   }
   return c;
 }

@@ -138,7 +138,7 @@ void RigidBodies::unpack(const std::vector<double>& v) { bodies_ = unpack_states
 // Mass ~ L^D, inertia ~ M L^2, angular momentum ~ inertia / time; velocity and rotation unchanged.
 RigidBodyState in_unit(RigidBodyState s, const LengthUnit& u, bool to_si) {
   const int D = u.dimension;
-  auto f = [&](double& v, int k) { v = to_si ? u.to_si(v, k) : u.to_engine(v, k); };
+  auto f = [&](double& v, int k) { v = u.convert(v, k, to_si); };
   f(s.mass, D);
   for (double& v : s.inertia0) f(v, D + 2);
   for (double& v : s.centre) f(v, 1);

@@ -43,6 +43,28 @@ struct Checkpoint {
   }
 };
 
+// A real field's values (components of 4 or 8 bytes, as its element_bytes / components say), as
+// doubles: floats widen exactly.
+inline std::vector<double> real_values(const CheckpointField& f) {
+  const std::size_t from = f.element_bytes / std::size_t(f.components), n = f.bytes.size() / from;
+  std::vector<double> out(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (from == 8) std::memcpy(&out[k], f.bytes.data() + k * 8, 8);
+    else { float g; std::memcpy(&g, f.bytes.data() + k * 4, 4); out[k] = double(g); }
+  }
+  return out;
+}
+// The field's bytes anew from `values`, `width` (4 or 8) bytes each: double to float rounds to nearest.
+inline void set_real_values(CheckpointField& f, const std::vector<double>& values, std::size_t width) {
+  std::vector<unsigned char> bytes(values.size() * width);
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (width == 8) std::memcpy(bytes.data() + k * 8, &values[k], 8);
+    else { const float g = float(values[k]); std::memcpy(bytes.data() + k * 4, &g, 4); }
+  }
+  f.bytes.swap(bytes);
+  f.element_bytes = width * std::size_t(f.components);
+}
+
 // A checkpoint written in another precision with its real fields converted, component by component,
 // to the sizes that `fields` (this build's registry) stores: double to float rounds to nearest,
 // float to double is exact. A field whose components are unknown (the raw format) is left as it
@@ -55,17 +77,7 @@ inline Checkpoint with_precision_of(const Checkpoint& c, const FieldRegistry& fi
     const std::size_t to = fields.get(cf.name).element_bytes / std::size_t(cf.components);
     const std::size_t from = cf.element_bytes / std::size_t(cf.components);
     if (to == from || (to != 4 && to != 8) || (from != 4 && from != 8)) continue;
-    const std::size_t values = cf.bytes.size() / from;
-    std::vector<unsigned char> bytes(values * to);
-    for (std::size_t k = 0; k < values; ++k) {
-      double v;
-      if (from == 8) std::memcpy(&v, cf.bytes.data() + k * 8, 8);
-      else { float f; std::memcpy(&f, cf.bytes.data() + k * 4, 4); v = double(f); }
-      if (to == 8) std::memcpy(bytes.data() + k * 8, &v, 8);
-      else { const float f = float(v); std::memcpy(bytes.data() + k * 4, &f, 4); }
-    }
-    cf.bytes.swap(bytes);
-    cf.element_bytes = to * std::size_t(cf.components);
+    set_real_values(cf, real_values(cf), to);
   }
   return out;
 }

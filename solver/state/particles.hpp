@@ -13,16 +13,6 @@
 
 namespace psph {
 
-// The scalar a field's values are made of (a vector's or matrix's components).
-template <class T>
-struct Scalar { using type = T; };
-template <class T, int D>
-struct Scalar<VecT<T, D>> { using type = T; };
-template <int D>
-struct Scalar<Mat<D>> { using type = Real; };
-template <class T>
-using ScalarOf = typename Scalar<T>::type;
-
 template <int D>
 struct ParticleView {
   int n = 0;
